@@ -1,0 +1,84 @@
+#pragma once
+/// \file
+/// What shading needs of a deforming surface, kept in step every frame: render-vertex
+/// positions, angle-weighted normals, UV tangent frames and the local planes of subsurface
+/// texture mapping, the planes re-fitted only where the mesh moved.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "tissue/core/result.h"
+#include "tissue/core/surface_mesh.h"
+#include "tissue/mesh/local_planes.h"
+
+namespace tissue::mesh {
+
+/// Wall-clock cost of one update, per phase (ms), and what the plane re-fit touched.
+struct SurfaceUpdateStats {
+  double gatherMs = 0.0;
+  double normalsMs = 0.0;
+  double tangentsMs = 0.0;
+  double planesMs = 0.0;
+  RefitStats refit;
+};
+
+/// A surface mesh whose shading attributes follow its deformation.
+///
+/// The simulator moves geometric vertices (one per surface point); the renderer draws render
+/// vertices (split at UV seams). Normals and planes are computed per geometric vertex so they
+/// are continuous across seams; tangents per render vertex, from each chart's own UVs.
+class DeformableSurface {
+ public:
+  /// Validates `mesh` and computes everything at the rest state. Fails when the mesh is
+  /// invalid or has no UVs (tangent frames need them).
+  static Result<DeformableSurface> create(SurfaceMesh mesh, const PlaneFitSettings& planeSettings = {});
+
+  /// Moves the surface: `geometricPositions` holds one position (mm) per geometric vertex.
+  /// Vertices that moved less than `toleranceMm` keep their planes.
+  SurfaceUpdateStats update(std::span<const Float3> geometricPositions, float toleranceMm = 0.0f);
+
+  /// Re-fits every plane from scratch (the reference for the incremental path).
+  void refitAllPlanes();
+
+  // Render-vertex arrays, ready to upload.
+  std::span<const Float3> positions() const { return m_mesh.positions; }  ///< mm
+  std::span<const Float2> uvs() const { return m_mesh.uvs; }
+  std::span<const Triangle> triangles() const { return m_mesh.triangles; }
+  std::span<const Float3> normals() const { return m_normals; }    ///< unit
+  std::span<const Float4> tangents() const { return m_tangents; }  ///< (T, handedness)
+  std::span<const Float4> planes() const { return m_planes; }      ///< (N_S, d mm), eq. 14
+
+  // Geometric-vertex arrays (the simulator's view).
+  std::span<const Float3> geometricRestPositions() const { return m_geoRest; }
+  std::span<const Float3> geometricPositions() const { return m_geoPositions; }
+  std::span<const Triangle> geometricTriangles() const { return m_geoTriangles; }
+  /// Geometric vertices on open boundaries (a patch's pinnable border).
+  std::span<const std::uint32_t> boundaryVertices() const { return m_boundary; }
+
+  const SurfaceMesh& mesh() const { return m_mesh; }
+  const IncrementalPlaneFitter& planeFitter() const { return m_fitter; }
+
+ private:
+  DeformableSurface(SurfaceMesh mesh, std::vector<Float3> geoRest, std::vector<Triangle> geoTriangles,
+                    const PlaneFitSettings& settings);
+  void computeShading();
+
+  SurfaceMesh m_mesh;
+  std::vector<Float3> m_geoRest;
+  std::vector<Float3> m_geoPositions;
+  std::vector<Triangle> m_geoTriangles;
+  std::vector<std::uint32_t> m_boundary;
+  std::vector<Float3> m_geoNormals;
+  IncrementalPlaneFitter m_fitter;
+  std::vector<Float3> m_normals;
+  std::vector<Float4> m_tangents;
+  std::vector<Float4> m_planes;
+};
+
+/// Geometric positions (one per geometric vertex) of a render mesh.
+std::vector<Float3> geometricPositionsOf(const SurfaceMesh& mesh);
+/// The triangles re-indexed to geometric vertices.
+std::vector<Triangle> geometricTrianglesOf(const SurfaceMesh& mesh);
+
+}  // namespace tissue::mesh

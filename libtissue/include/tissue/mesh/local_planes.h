@@ -1,0 +1,116 @@
+#pragma once
+/// \file
+/// The per-vertex local planes of subsurface texture mapping (François et al. §2.2):
+/// for each vertex V a least-squares plane through the vertices inside a sphere of radius
+/// r = -log(eps) / sigma_t (eq. 7-8), stored as its unit normal N_S and the offset d along the
+/// vertex normal N_V at which the plane crosses it, P_V = V + d N_V (eq. 14). The renderer
+/// interpolates (N_S, d) across triangles (eq. 9).
+///
+/// Neighbourhoods are taken in the rest state and kept under deformation (see
+/// docs/DECISIONS.md): they follow the material, so a plane changes continuously in time and
+/// re-fitting after a deformation only touches planes whose neighbourhood contains a vertex
+/// that moved.
+
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "tissue/core/types.h"
+
+namespace tissue::mesh {
+
+/// Parameters of the neighbourhood sphere (François eq. 7-8).
+struct PlaneFitSettings {
+  float sigma_t = 1.5f;   ///< mm^-1, extinction of the first layer (smallest RGB channel)
+  float epsilon = 0.01f;  ///< light attenuated below this fraction is ignored (unitless, 0..1)
+
+  /// r = -log(eps) / sigma_t (eq. 8), mm.
+  float radiusMm() const { return -std::log(epsilon) / sigma_t; }
+};
+
+/// Compressed neighbourhood lists: vertex i's neighbours are indices[offsets[i] .. offsets[i+1]).
+/// Every list contains i itself and its 1-ring (so a mesh coarser than the sphere still gets a
+/// plane, and a plane is re-fitted whenever its vertex normal can have changed). The relation
+/// is symmetric.
+struct Neighbourhoods {
+  std::vector<std::uint32_t> offsets;  ///< #V + 1
+  std::vector<std::uint32_t> indices;  ///< neighbour vertex indices
+  std::size_t vertexCount() const { return offsets.empty() ? 0 : offsets.size() - 1; }
+};
+
+/// Finds, for every vertex, the vertices within `radiusMm` of it (uniform grid, O(V k)),
+/// plus its 1-ring when `oneRingOf` is non-empty (triangles indexing the same vertices).
+Neighbourhoods findNeighbourhoods(std::span<const Float3> positions, float radiusMm,
+                                  std::span<const Triangle> oneRingOf = {});
+
+/// Fits every vertex's plane from scratch (the reference the incremental fitter must equal).
+/// \param positions  #V current positions, mm
+/// \param normals    #V current unit vertex normals (orient N_S and define d, eq. 14)
+/// \param hoods      neighbourhoods from findNeighbourhoods
+/// \param planes     #V output (N_S.xyz, d in mm)
+void fitVertexPlanes(std::span<const Float3> positions, std::span<const Float3> normals,
+                     const Neighbourhoods& hoods, std::span<Float4> planes);
+
+/// How far two sets of planes are apart.
+struct PlaneDeviation {
+  double maxAngleRad = 0.0;  ///< largest angle between corresponding normals, rad (atan2 form: exact near 0)
+  double maxOffsetMm = 0.0;  ///< largest difference of the offsets d, mm
+};
+
+/// Compares two #V plane arrays (N_S, d).
+PlaneDeviation comparePlanes(std::span<const Float4> a, std::span<const Float4> b);
+
+/// Statistics of one incremental update.
+struct RefitStats {
+  std::size_t movedVertices = 0;   ///< vertices whose position changed beyond the tolerance
+  std::size_t refittedPlanes = 0;  ///< planes whose neighbourhood contained a moved vertex
+};
+
+/// Keeps the planes of a deforming mesh up to date, re-fitting only where it moved.
+///
+/// Per plane it keeps the first and second moments of its neighbourhood (in double, about the
+/// rest-state centroid); a moved vertex updates the moments of every plane that contains it,
+/// and only those planes solve their 3x3 eigenproblem again.
+class IncrementalPlaneFitter {
+ public:
+  /// \param restPositions  #V positions that define the neighbourhoods, mm
+  /// \param triangles      topology (for the 1-ring)
+  IncrementalPlaneFitter(std::span<const Float3> restPositions, std::span<const Triangle> triangles,
+                         const PlaneFitSettings& settings = {});
+
+  /// Full re-fit at `positions` (also resets the moments, removing any accumulated rounding).
+  void fitAll(std::span<const Float3> positions, std::span<const Float3> normals);
+
+  /// Incremental re-fit: vertices that moved by more than `toleranceMm` since the last fit
+  /// update their planes' moments; only those planes are solved again.
+  RefitStats update(std::span<const Float3> positions, std::span<const Float3> normals,
+                    float toleranceMm = 0.0f);
+
+  /// Incremental re-fit when the caller knows which vertices moved.
+  RefitStats updateMoved(std::span<const Float3> positions, std::span<const Float3> normals,
+                         std::span<const std::uint32_t> movedVertices);
+
+  std::span<const Float4> planes() const { return m_planes; }
+  const Neighbourhoods& neighbourhoods() const { return m_hoods; }
+  const PlaneFitSettings& settings() const { return m_settings; }
+
+ private:
+  struct Moments {
+    double s[3];   // sum of (p - origin)
+    double ss[6];  // sum of (p - origin)(p - origin)^T, upper triangle xx xy xz yy yz zz
+  };
+  void solvePlane(std::uint32_t v, std::span<const Float3> positions, std::span<const Float3> normals);
+
+  PlaneFitSettings m_settings;
+  Neighbourhoods m_hoods;
+  std::vector<Float3> m_origin;    // per plane: rest-state centroid (conditioning)
+  std::vector<Moments> m_moments;  // per plane
+  std::vector<Float3> m_fitted;    // positions at the last fit, per vertex
+  std::vector<Float4> m_planes;    // per vertex (N_S, d)
+  std::vector<std::uint32_t> m_dirtyStamp;
+  std::uint32_t m_stamp = 0;
+  std::vector<std::uint32_t> m_dirtyList;
+};
+
+}  // namespace tissue::mesh

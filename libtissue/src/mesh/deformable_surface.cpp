@@ -1,0 +1,128 @@
+#include "tissue/mesh/deformable_surface.h"
+
+#include <algorithm>
+#include <unordered_map>
+
+#include "tissue/core/stopwatch.h"
+#include "tissue/mesh/load_mesh.h"
+#include "tissue/mesh/tangent_frames.h"
+#include "tissue/mesh/vertex_normals.h"
+
+namespace tissue::mesh {
+
+std::vector<Float3> geometricPositionsOf(const SurfaceMesh& mesh) {
+  std::vector<Float3> geo(mesh.geometricVertexCount);
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+    geo[mesh.geometricIndex[i]] = mesh.positions[i];
+  return geo;
+}
+
+std::vector<Triangle> geometricTrianglesOf(const SurfaceMesh& mesh) {
+  std::vector<Triangle> tris(mesh.triangles.size());
+  for (std::size_t t = 0; t < tris.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      tris[t][k] = mesh.geometricIndex[mesh.triangles[t][k]];
+  return tris;
+}
+
+namespace {
+
+/// Vertices on an edge used by exactly one triangle (an open border).
+std::vector<std::uint32_t> findBoundary(std::span<const Triangle> tris, std::size_t vertexCount) {
+  std::unordered_map<std::uint64_t, int> uses;
+  for (const auto& t : tris)
+    for (int k = 0; k < 3; ++k) {
+      const auto a = std::min(t[k], t[(k + 1) % 3]), b = std::max(t[k], t[(k + 1) % 3]);
+      ++uses[(std::uint64_t(a) << 32) | b];
+    }
+  std::vector<char> onBorder(vertexCount, 0);
+  for (const auto& [key, count] : uses)
+    if (count == 1) onBorder[key >> 32] = onBorder[key & 0xFFFFFFFFu] = 1;
+  std::vector<std::uint32_t> border;
+  for (std::uint32_t v = 0; v < vertexCount; ++v)
+    if (onBorder[v]) border.push_back(v);
+  return border;
+}
+
+}  // namespace
+
+Result<DeformableSurface> DeformableSurface::create(SurfaceMesh mesh, const PlaneFitSettings& planeSettings) {
+  if (auto ok = validateMesh(mesh, "deformable surface"); !ok) return ok.error();
+  if (!mesh.hasUvs()) {
+    return Error{
+        "deformable surface: the mesh has no texture coordinates; tangent frames need UVs "
+        "(load it with LoadOptions::requireUvs, or give it an atlas)"};
+  }
+  if (!(planeSettings.sigma_t > 0.0f) || !(planeSettings.epsilon > 0.0f && planeSettings.epsilon < 1.0f)) {
+    return Error{
+        "deformable surface: plane fit needs sigma_t > 0 mm^-1 and 0 < epsilon < 1; fix the material"};
+  }
+  auto geoRest = geometricPositionsOf(mesh);
+  auto geoTris = geometricTrianglesOf(mesh);
+  return DeformableSurface(std::move(mesh), std::move(geoRest), std::move(geoTris), planeSettings);
+}
+
+DeformableSurface::DeformableSurface(SurfaceMesh mesh, std::vector<Float3> geoRest,
+                                     std::vector<Triangle> geoTriangles, const PlaneFitSettings& settings)
+    : m_mesh(std::move(mesh)),
+      m_geoRest(std::move(geoRest)),
+      m_geoPositions(m_geoRest),
+      m_geoTriangles(std::move(geoTriangles)),
+      m_boundary(findBoundary(m_geoTriangles, m_geoRest.size())),
+      m_geoNormals(m_geoRest.size()),
+      m_fitter(m_geoRest, m_geoTriangles, settings),
+      m_normals(m_mesh.positions.size()),
+      m_tangents(m_mesh.positions.size()),
+      m_planes(m_mesh.positions.size()) {
+  computeVertexNormals(m_geoPositions, m_geoTriangles, m_geoNormals);
+  m_fitter.fitAll(m_geoPositions, m_geoNormals);
+  computeShading();
+}
+
+SurfaceUpdateStats DeformableSurface::update(std::span<const Float3> geometricPositions, float toleranceMm) {
+  SurfaceUpdateStats stats;
+  Stopwatch clock;
+  // Phase: positions in (geometric -> render vertices).
+  std::copy(geometricPositions.begin(), geometricPositions.end(), m_geoPositions.begin());
+  for (std::size_t i = 0; i < m_mesh.positions.size(); ++i)
+    m_mesh.positions[i] = m_geoPositions[m_mesh.geometricIndex[i]];
+  stats.gatherMs = clock.elapsedMs();
+  // Phase: normals, per geometric vertex so they agree across UV seams.
+  clock.restart();
+  computeVertexNormals(m_geoPositions, m_geoTriangles, m_geoNormals);
+  for (std::size_t i = 0; i < m_normals.size(); ++i)
+    m_normals[i] = m_geoNormals[m_mesh.geometricIndex[i]];
+  stats.normalsMs = clock.elapsedMs();
+  // Phase: local planes, re-fitted only where a neighbourhood moved.
+  clock.restart();
+  stats.refit = m_fitter.update(m_geoPositions, m_geoNormals, toleranceMm);
+  const auto planes = m_fitter.planes();
+  for (std::size_t i = 0; i < m_planes.size(); ++i)
+    m_planes[i] = planes[m_mesh.geometricIndex[i]];
+  stats.planesMs = clock.elapsedMs();
+  // Phase: tangent frames, per render vertex from each chart's own UVs.
+  clock.restart();
+  computeTangentFrames(m_mesh.positions, m_mesh.uvs, m_mesh.triangles, m_normals, m_tangents,
+                       m_mesh.geometricIndex);
+  stats.tangentsMs = clock.elapsedMs();
+  return stats;
+}
+
+void DeformableSurface::refitAllPlanes() {
+  m_fitter.fitAll(m_geoPositions, m_geoNormals);
+  const auto planes = m_fitter.planes();
+  for (std::size_t i = 0; i < m_planes.size(); ++i)
+    m_planes[i] = planes[m_mesh.geometricIndex[i]];
+}
+
+void DeformableSurface::computeShading() {
+  for (std::size_t i = 0; i < m_normals.size(); ++i)
+    m_normals[i] = m_geoNormals[m_mesh.geometricIndex[i]];
+  const auto planes = m_fitter.planes();
+  for (std::size_t i = 0; i < m_planes.size(); ++i)
+    m_planes[i] = planes[m_mesh.geometricIndex[i]];
+  computeTangentFrames(m_mesh.positions, m_mesh.uvs, m_mesh.triangles, m_normals, m_tangents,
+                       m_mesh.geometricIndex);
+}
+
+}  // namespace tissue::mesh

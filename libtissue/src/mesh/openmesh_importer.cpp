@@ -1,0 +1,154 @@
+// OpenMesh adapter, reading half (see openmesh_importer.h for why a raw importer).
+#include "openmesh_importer.h"
+
+#include <OpenMesh/Core/IO/IOManager.hh>
+#include <OpenMesh/Core/IO/importer/BaseImporter.hh>
+#include <algorithm>
+#include <cctype>
+#include <iostream>
+#include <sstream>
+
+namespace tissue::mesh::detail {
+namespace {
+
+namespace OM = OpenMesh;
+using OM::IO::BaseImporter;
+
+/// Records every element OpenMesh's readers report; ignores colours, normals and status.
+class RawImporter final : public BaseImporter {
+ public:
+  explicit RawImporter(RawMesh& out) : m_out(out) {}
+
+  OM::VertexHandle add_vertex(const OM::Vec3f& p) override {
+    m_out.points.push_back({p[0], p[1], p[2]});
+    return OM::VertexHandle(int(m_out.points.size()) - 1);
+  }
+  OM::VertexHandle add_vertex() override { return add_vertex(OM::Vec3f(0, 0, 0)); }
+  OM::HalfedgeHandle add_edge(OM::VertexHandle, OM::VertexHandle) override { return OM::HalfedgeHandle(); }
+  OM::FaceHandle add_face(const VHandles& handles) override {
+    std::vector<int> polygon(handles.size());
+    std::transform(handles.begin(), handles.end(), polygon.begin(), [](auto h) { return h.idx(); });
+    m_out.polygons.push_back(std::move(polygon));
+    m_out.cornerUvs.emplace_back();
+    return OM::FaceHandle(int(m_out.polygons.size()) - 1);
+  }
+  OM::FaceHandle add_face(OM::HalfedgeHandle) override { return OM::FaceHandle(); }
+  void add_face_texcoords(OM::FaceHandle fh, OM::VertexHandle, const std::vector<OM::Vec2f>& uvs) override {
+    if (!fh.is_valid() || std::size_t(fh.idx()) >= m_out.cornerUvs.size()) return;
+    auto& corners = m_out.cornerUvs[std::size_t(fh.idx())];
+    corners.clear();
+    for (const auto& uv : uvs)
+      corners.push_back({uv[0], uv[1]});
+  }
+  void add_face_texcoords(OM::FaceHandle fh, OM::VertexHandle vh,
+                          const std::vector<OM::Vec3f>& uvs) override {
+    std::vector<OM::Vec2f> uv2;
+    for (const auto& uv : uvs)
+      uv2.emplace_back(uv[0], uv[1]);
+    add_face_texcoords(fh, vh, uv2);
+  }
+  void set_texcoord(OM::VertexHandle vh, const OM::Vec2f& uv) override {
+    if (!vh.is_valid()) return;
+    if (m_out.vertexUvs.size() <= std::size_t(vh.idx())) m_out.vertexUvs.resize(std::size_t(vh.idx()) + 1);
+    m_out.vertexUvs[std::size_t(vh.idx())] = {uv[0], uv[1]};
+  }
+  void set_texcoord(OM::VertexHandle vh, const OM::Vec3f& uv) override {
+    set_texcoord(vh, OM::Vec2f(uv[0], uv[1]));
+  }
+  void set_point(OM::VertexHandle vh, const OM::Vec3f& p) override {
+    if (vh.is_valid() && std::size_t(vh.idx()) < m_out.points.size())
+      m_out.points[std::size_t(vh.idx())] = {p[0], p[1], p[2]};
+  }
+
+  // Attributes the mesh module does not use.
+  void set_face_texindex(OM::FaceHandle, int) override {}
+  void set_halfedge(OM::VertexHandle, OM::HalfedgeHandle) override {}
+  void set_normal(OM::VertexHandle, const OM::Vec3f&) override {}
+  void set_normal(OM::VertexHandle, const OM::Vec3d&) override {}
+  void set_color(OM::VertexHandle, const OM::Vec3uc&) override {}
+  void set_color(OM::VertexHandle, const OM::Vec4uc&) override {}
+  void set_color(OM::VertexHandle, const OM::Vec3f&) override {}
+  void set_color(OM::VertexHandle, const OM::Vec4f&) override {}
+  void set_status(OM::VertexHandle, const OM::Attributes::StatusInfo&) override {}
+  void set_next(OM::HalfedgeHandle, OM::HalfedgeHandle) override {}
+  void set_face(OM::HalfedgeHandle, OM::FaceHandle) override {}
+  void request_face_texcoords2D() override {}
+  void set_texcoord(OM::HalfedgeHandle, const OM::Vec2f&) override {}
+  void set_texcoord(OM::HalfedgeHandle, const OM::Vec3f&) override {}
+  void set_status(OM::HalfedgeHandle, const OM::Attributes::StatusInfo&) override {}
+  void set_color(OM::EdgeHandle, const OM::Vec3uc&) override {}
+  void set_color(OM::EdgeHandle, const OM::Vec4uc&) override {}
+  void set_color(OM::EdgeHandle, const OM::Vec3f&) override {}
+  void set_color(OM::EdgeHandle, const OM::Vec4f&) override {}
+  void set_status(OM::EdgeHandle, const OM::Attributes::StatusInfo&) override {}
+  void set_normal(OM::FaceHandle, const OM::Vec3f&) override {}
+  void set_normal(OM::FaceHandle, const OM::Vec3d&) override {}
+  void set_color(OM::FaceHandle, const OM::Vec3uc&) override {}
+  void set_color(OM::FaceHandle, const OM::Vec4uc&) override {}
+  void set_color(OM::FaceHandle, const OM::Vec3f&) override {}
+  void set_color(OM::FaceHandle, const OM::Vec4f&) override {}
+  void set_status(OM::FaceHandle, const OM::Attributes::StatusInfo&) override {}
+  void add_texture_information(int, std::string) override {}
+
+  size_t n_vertices() const override { return m_out.points.size(); }
+  size_t n_faces() const override { return m_out.polygons.size(); }
+  size_t n_edges() const override { return 0; }
+
+ private:
+  RawMesh& m_out;
+};
+
+/// OpenMesh reports reader problems on its own log streams; capture them for the error text.
+class CapturedLog {
+ public:
+  CapturedLog() : m_oldErr(std::cerr.rdbuf(m_text.rdbuf())) {}
+  ~CapturedLog() { std::cerr.rdbuf(m_oldErr); }
+  CapturedLog(const CapturedLog&) = delete;
+  CapturedLog& operator=(const CapturedLog&) = delete;
+  std::string firstLine() const {
+    std::string line;
+    std::istringstream in(m_text.str());
+    while (std::getline(in, line))
+      if (!line.empty()) return line;
+    return {};
+  }
+
+ private:
+  std::ostringstream m_text;
+  std::streambuf* m_oldErr;
+};
+
+}  // namespace
+
+Result<RawMesh> readRawMesh(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    return Error{"cannot open mesh '" + path.string() + "': no such file; check the path"};
+  }
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl") {
+    return Error{"cannot read mesh '" + path.string() + "': unsupported extension '" + ext +
+                 "'; give an .obj, .ply, .off or .stl file"};
+  }
+  if (ext == ".obj") return readObj(path);
+  RawMesh raw;
+  RawImporter importer(raw);
+  OpenMesh::IO::Options options = OpenMesh::IO::Options::FaceTexCoord | OpenMesh::IO::Options::VertexTexCoord;
+  bool ok = false;
+  std::string log;
+  {
+    CapturedLog captured;
+    ok = OpenMesh::IO::IOManager().read(path.string(), importer, options);
+    log = captured.firstLine();
+  }
+  if (!ok) {
+    return Error{"cannot parse mesh '" + path.string() + "'" + (log.empty() ? "" : " (" + log + ")") +
+                 "; check that the file is a valid " + ext.substr(1) + " file"};
+  }
+  // The readers report per-face texture coordinates only where the file has them.
+  if (!options.vertex_has_texcoord()) raw.vertexUvs.clear();
+  return raw;
+}
+
+}  // namespace tissue::mesh::detail

@@ -1,0 +1,32 @@
+#pragma once
+// The OpenMesh adapter's reading half: OpenMesh's format readers (OBJ, PLY, OFF, STL) feed a
+// raw importer that records exactly what the file says - points, polygons, per-corner and
+// per-vertex texture coordinates - without OpenMesh's topology checks, which silently drop
+// non-manifold faces. Validation then names each defect (validate_mesh.cpp).
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tissue/core/result.h"
+
+namespace tissue::mesh::detail {
+
+/// What a mesh file contains, in file order.
+struct RawMesh {
+  std::vector<std::array<float, 3>> points;
+  std::vector<std::vector<int>> polygons;                    ///< 0-based point indices
+  std::vector<std::vector<std::array<float, 2>>> cornerUvs;  ///< per polygon; empty if none
+  std::vector<std::array<float, 2>> vertexUvs;               ///< per point; empty if none
+  std::vector<int> polygonLines;  ///< per polygon: 1-based line in the file, or empty if unknown
+};
+
+/// Reads `path`: OBJ with the project's strict reader (obj_reader.cpp), PLY, OFF and STL with
+/// OpenMesh's readers.
+Result<RawMesh> readRawMesh(const std::filesystem::path& path);
+
+/// The strict OBJ reader: every defect reported with its line number.
+Result<RawMesh> readObj(const std::filesystem::path& path);
+
+}  // namespace tissue::mesh::detail

@@ -1,0 +1,31 @@
+#pragma once
+// Saves the GL state the renderer touches and restores it on destruction, so a host's state
+// survives a render call (Filament's rule: the engine's GL use must not leak into the host).
+#include "tissue/gl/gl_api.h"
+
+namespace tissue::render {
+
+/// The list of saved state is documented at Renderer::renderTo.
+class StateGuard {
+ public:
+  explicit StateGuard(const gl::GlApi& gl);
+  ~StateGuard();
+  StateGuard(const StateGuard&) = delete;
+  StateGuard& operator=(const StateGuard&) = delete;
+
+ private:
+  const gl::GlApi& m_gl;
+  GLint m_drawFramebuffer = 0, m_readFramebuffer = 0, m_renderbuffer = 0;
+  GLint m_viewport[4] = {}, m_scissorBox[4] = {};
+  GLint m_program = 0, m_vertexArray = 0, m_arrayBuffer = 0;
+  GLint m_activeTexture = 0, m_texture2d[2] = {};
+  GLint m_depthFunc = 0, m_cullMode = 0, m_frontFace = 0;
+  GLint m_packAlignment = 0, m_unpackAlignment = 0, m_unpackRowLength = 0, m_pixelUnpackBuffer = 0;
+  GLboolean m_depthMask = GL_TRUE, m_colorMask[4] = {};
+  GLfloat m_clearColor[4] = {};
+  GLdouble m_clearDepth = 1.0;
+  GLboolean m_depthTest = GL_FALSE, m_cullFace = GL_FALSE, m_blend = GL_FALSE, m_scissorTest = GL_FALSE,
+            m_srgb = GL_FALSE, m_multisample = GL_FALSE;
+};
+
+}  // namespace tissue::render

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Installs the Debian packages tissue needs, and only those that are missing.
+# Runs as root on a fresh Debian 12 (bookworm) machine; a no-op when all are present.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config git
+  libopenmesh-dev          # mesh module (adapter in libtissue/src/mesh)
+  libeigen3-dev            # small dense linear algebra (plane fits, solvers)
+  libglm-dev               # renderer maths
+  libegl-dev libegl-mesa0 libgl-dev libgl1-mesa-dri   # EGL surfaceless context on Mesa llvmpipe
+  libosmesa6-dev           # OSMesa fallback context
+  libglfw3-dev             # windowed context (viewer)
+  libvtk9-dev vtk9 python3-vtk9   # inspection module; vtk9 and python3-vtk9 carry files VTK's CMake config names
+  nlohmann-json3-dev       # JSON output and data files
+  python3-glad             # generates the GL 3.3 core loader at build time (no download)
+  libstb-dev               # PNG read/write
+  libcli11-dev             # command-line parsing
+  libgtest-dev libgmock-dev libbenchmark-dev   # tests and benchmarks
+  xvfb xauth               # X server for VTK views and GLFW windows without a display
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+if [ "$(id -u)" -ne 0 ]; then
+  echo "install-deps: missing packages: ${missing[*]}; run this script as root (or sudo) to install them" >&2
+  exit 1
+fi
+
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# The main job: installs what is missing, builds (Release) and runs the default headless
+# scenario, writing images and a report into out/main (or the folder given as $1).
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${TISSUE_BUILD_DIR:-$root/build}"
+out="${1:-$root/out/main}"
+bash "$root/scripts/build.sh"
+"$build/sim/tissue-sim" demo --out "$out"

@@ -1,0 +1,12 @@
+// Blinn-Phong reflectance (Blinn 1977) for one light: Lambert diffuse plus a normalised
+// half-vector lobe, (n + 8) / (8 pi) (Akenine-Moller et al., Real-Time Rendering 3rd ed.,
+// eq. 7.49), so the highlight keeps its energy as the exponent changes.
+// Returns the reflected fraction per unit incident radiance, times cos(theta).
+vec3 blinnPhong(vec3 N, vec3 L, vec3 V, vec3 albedo, float specular, float shininess) {
+  float NdotL = max(dot(N, L), 0.0);
+  if (NdotL <= 0.0) return vec3(0.0);
+  vec3 H = normalize(L + V);
+  float NdotH = max(dot(N, H), 0.0);
+  float lobe = (shininess + 8.0) / (8.0 * 3.14159265) * pow(NdotH, shininess);
+  return (albedo / 3.14159265 + vec3(specular * lobe)) * NdotL * 3.14159265;
+}

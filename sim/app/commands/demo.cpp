@@ -1,0 +1,35 @@
+// tissue-sim demo: the default headless scenario (the README's main job). It pokes the data/
+// liver over a short frame loop, keeps normals, tangent frames and the local planes of
+// subsurface texture mapping in step, renders the organ before and after (when a GL context
+// can be created), and writes a report. Each frame is a sequence of named, timed phases.
+#include <cmath>
+#include <iostream>
+
+#include "command.h"
+#include "demo_scenario.h"
+#include "output.h"
+
+namespace tissue::sim_app {
+
+void registerDemoCommand(CLI::App& app, const GlobalOptions& global, int& exitCode) {
+  auto o = std::make_shared<DemoOptions>();
+  auto* cmd = app.add_subcommand(
+      "demo", "the default headless scenario: poke the liver, update shading data, render, report");
+  cmd->add_option("--out", o->outDir, "output folder for images and the report")->required();
+  cmd->add_option("--mesh", o->meshFile, "organ mesh with UVs (default: data/meshes/liver.obj)");
+  cmd->add_option("--frames", o->frames, "frames to simulate (default 60)");
+  cmd->add_option("--poke-fraction", o->pokeFraction,
+                  "fraction of vertices the instrument moves (default 0.05)");
+  cmd->add_option("--width", o->width, "image width in pixels (default 960)");
+  cmd->add_option("--height", o->height, "image height in pixels (default 720)");
+  cmd->callback([o, &global, &exitCode] {
+    auto report = runDemo(*o);
+    if (!report) {
+      exitCode = fail("demo", report.error().message);
+      return;
+    }
+    printResult(global, *report);
+  });
+}
+
+}  // namespace tissue::sim_app

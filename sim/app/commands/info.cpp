@@ -1,0 +1,28 @@
+// tissue-sim info: which GL context tissue gets here and what the driver says about itself.
+#include "command.h"
+#include "output.h"
+#include "tissue/context/headless_context.h"
+
+namespace tissue::sim_app {
+
+void registerInfoCommand(CLI::App& app, const GlobalOptions& global, int& exitCode) {
+  auto* cmd =
+      app.add_subcommand("info", "describe the headless GL context (TISSUE_GL_CONTEXT=egl|osmesa|glfw)");
+  cmd->callback([&global, &exitCode] {
+    auto context = context::createHeadlessContext({}, {.backend = "", .log = false});
+    if (!context) {
+      exitCode = fail("info", context.error().message);
+      return;
+    }
+    const context::ContextInfo& info = (*context)->info();
+    nlohmann::json out;
+    out["gl_context"] = info.backend;
+    out["gl_platform"] = info.platform;
+    out["gl_vendor"] = info.vendor;
+    out["gl_renderer"] = info.renderer;
+    out["gl_version"] = info.version;
+    printResult(global, out);
+  });
+}
+
+}  // namespace tissue::sim_app

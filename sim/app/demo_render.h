@@ -1,0 +1,35 @@
+#pragma once
+/// \file
+/// The demo's rendering: a headless context (EGL, falling back to OSMesa) and the renderer
+/// core, created on first use; the organ is uploaded once and then updated in place.
+
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "material_file.h"
+#include "tissue/core/result.h"
+#include "tissue/mesh/deformable_surface.h"
+
+namespace tissue::sim_app {
+
+/// Renders a deformable surface with its textures into PNG files.
+class DemoRenderer {
+ public:
+  DemoRenderer(int width, int height);
+  ~DemoRenderer();
+  DemoRenderer(const DemoRenderer&) = delete;
+  DemoRenderer& operator=(const DemoRenderer&) = delete;
+
+  /// Renders the surface as it is now and writes `png` atomically.
+  Result<void> render(const mesh::DeformableSurface& surface, const LayeredMaterial& material,
+                      const std::filesystem::path& png);
+  /// GL context and renderer strings, and the last frame's timings (ms).
+  nlohmann::json info() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> m_impl;
+};
+
+}  // namespace tissue::sim_app

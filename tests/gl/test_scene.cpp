@@ -1,0 +1,103 @@
+#include "test_scene.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace tissue::test {
+namespace {
+constexpr float kPi = std::numbers::pi_v<float>;
+
+std::uint8_t toByte(float x) {
+  return static_cast<std::uint8_t>(std::lround(std::fmin(std::fmax(x, 0.0f), 1.0f) * 255.0f));
+}
+
+Image8 normalMapFromHeight(int size, float strength, float (*height)(float, float)) {
+  Image8 image(size, size, 3);
+  const float h = 1.0f / static_cast<float>(size);
+  for (int y = 0; y < size; ++y) {
+    for (int x = 0; x < size; ++x) {
+      // Image row 0 is the top, v = 1 (OBJ convention).
+      const float u = (static_cast<float>(x) + 0.5f) * h;
+      const float v = 1.0f - (static_cast<float>(y) + 0.5f) * h;
+      const float du = (height(u + h, v) - height(u - h, v)) / (2.0f * h);
+      const float dv = (height(u, v + h) - height(u, v - h)) / (2.0f * h);
+      float n[3] = {-strength * du, -strength * dv, 1.0f};
+      const float len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      std::uint8_t* p = image.at(x, y);
+      for (int c = 0; c < 3; ++c)
+        p[c] = toByte(n[c] / len * 0.5f + 0.5f);
+    }
+  }
+  return image;
+}
+
+}  // namespace
+
+SphereMesh makeSphere(float radiusMm, int rings, int segments) {
+  SphereMesh m;
+  for (int i = 0; i <= rings; ++i) {
+    const float v = static_cast<float>(i) / static_cast<float>(rings);
+    const float theta = kPi * (1.0f - v);  // polar angle from +y: v = 0 at the south pole
+    for (int j = 0; j <= segments; ++j) {
+      const float u = static_cast<float>(j) / static_cast<float>(segments);
+      const float phi = 2.0f * kPi * u;
+      const Float3 n{std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi)};
+      m.positions.push_back({radiusMm * n.x, radiusMm * n.y, radiusMm * n.z});
+      m.normals.push_back(n);
+      // T = dP/du normalised = (-sin phi, 0, -cos phi); dP/dv points north. B = w cross(N, T):
+      // cross(N, T) at the equator, phi = 0: N = (1,0,0), T = (0,0,-1) -> (0, 1, 0) = north, w = +1.
+      m.tangents.push_back({-std::sin(phi), 0.0f, -std::cos(phi), 1.0f});
+      m.uvs.push_back({u, v});
+    }
+  }
+  const auto index = [&](int i, int j) { return static_cast<std::uint32_t>(i * (segments + 1) + j); };
+  for (int i = 0; i < rings; ++i) {
+    for (int j = 0; j < segments; ++j) {
+      // Counter-clockwise seen from outside: (i, j) -> (i, j+1) -> (i+1, j+1) goes east then north.
+      if (i > 0) m.triangles.push_back({index(i, j), index(i, j + 1), index(i + 1, j + 1)});
+      if (i < rings - 1) m.triangles.push_back({index(i, j), index(i + 1, j + 1), index(i + 1, j)});
+    }
+  }
+  return m;
+}
+
+Image8 makeBumpyNormalMap(int size) {
+  return normalMapFromHeight(size, 0.008f, [](float u, float v) {
+    return std::sin(2.0f * kPi * 8.0f * u) * std::sin(2.0f * kPi * 5.0f * v) +
+           0.6f * std::sin(2.0f * kPi * 11.0f * v);
+  });
+}
+
+Image8 makeFlatNormalMap(int size) {
+  return normalMapFromHeight(size, 0.0f, [](float, float) { return 0.0f; });
+}
+
+Image8 makeBaseColor(int size) {
+  Image8 image(size, size, 3);
+  for (int y = 0; y < size; ++y) {
+    for (int x = 0; x < size; ++x) {
+      const float u = static_cast<float>(x) / static_cast<float>(size);
+      const float stripe = 0.5f + 0.5f * std::sin(2.0f * kPi * 3.0f * u);
+      std::uint8_t* p = image.at(x, y);
+      p[0] = toByte(0.78f + 0.1f * stripe);
+      p[1] = toByte(0.42f + 0.08f * stripe);
+      p[2] = toByte(0.40f);
+    }
+  }
+  return image;
+}
+
+render::Scene goldenScene() {
+  render::Scene scene;
+  scene.camera.eye = {0.0f, 25.0f, 130.0f};
+  scene.camera.target = {0.0f, 0.0f, 0.0f};
+  scene.camera.verticalFovDeg = 40.0f;
+  scene.camera.nearMm = 10.0f;
+  scene.camera.farMm = 400.0f;
+  scene.light.positionMm = {120.0f, 140.0f, 160.0f};
+  scene.material.specular = 0.2f;
+  scene.material.shininess = 40.0f;
+  return scene;
+}
+
+}  // namespace tissue::test

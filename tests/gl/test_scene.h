@@ -1,0 +1,34 @@
+#pragma once
+// A procedural test scene that needs no mesh module: a UV sphere with analytic normals and
+// tangent frames, and procedural normal and base-colour maps.
+#include <vector>
+
+#include "tissue/core/image.h"
+#include "tissue/render/renderer.h"
+
+namespace tissue::test {
+
+/// A UV sphere (radius mm) as render arrays; u = longitude / 2 pi, v = latitude, 0 at the south pole.
+struct SphereMesh {
+  std::vector<Float3> positions, normals;
+  std::vector<Float4> tangents;
+  std::vector<Float2> uvs;
+  std::vector<Triangle> triangles;
+  render::MeshArrays arrays() const { return {positions, normals, tangents, uvs, triangles}; }
+};
+
+/// `rings` latitude bands, `segments` longitude bands (a seam column is duplicated).
+SphereMesh makeSphere(float radiusMm, int rings, int segments);
+
+/// A bumpy tangent-space normal map: height sin(2 pi 8 u) sin(2 pi 5 v) + ridges along u, so its
+/// gradient has components along both u and v (so the handedness w matters).
+Image8 makeBumpyNormalMap(int size);
+/// The flat normal map (0, 0, 1).
+Image8 makeFlatNormalMap(int size);
+/// A base colour with a gentle stripe pattern (sRGB).
+Image8 makeBaseColor(int size);
+
+/// The scene the golden images are rendered with (256 x 256).
+render::Scene goldenScene();
+
+}  // namespace tissue::test
