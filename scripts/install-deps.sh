@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config git
+  build-essential cmake pkg-config git clang-format
   libopenmesh-dev          # mesh module (adapter in libtissue/src/mesh)
   libeigen3-dev            # small dense linear algebra (plane fits, solvers)
   libglm-dev               # renderer maths

@@ -11,6 +11,7 @@
 #include "output.h"
 #include "tissue/core/atomic_file.h"
 #include "tissue/core/stopwatch.h"
+#include "tissue/inspect/vtk_export.h"
 #include "tissue/mesh/deformable_surface.h"
 #include "tissue/mesh/load_mesh.h"
 #include "tissue/mesh/vertex_normals.h"
@@ -51,6 +52,28 @@ std::string markdownReport(const nlohmann::json& r) {
     md << "\n## Render\n\nskipped: " << r["render_skipped"].get<std::string>() << "\n";
   }
   return md.str();
+}
+
+/// Writes the surface with normals, tangents, planes (eq. 14) and displacement as a .vtp file.
+Result<void> writeInspection(const mesh::DeformableSurface& surface, const std::filesystem::path& path) {
+  const auto& m = surface.mesh();
+  std::vector<Float3> planeNormal(m.positions.size());
+  std::vector<float> planeOffset(m.positions.size()), displacement(m.positions.size());
+  const auto rest = surface.geometricRestPositions();
+  for (std::size_t i = 0; i < m.positions.size(); ++i) {
+    const auto& p = surface.planes()[i];
+    planeNormal[i] = {p.x, p.y, p.z};
+    planeOffset[i] = p.w;
+    const Float3 r = rest[m.geometricIndex[i]], q = m.positions[i];
+    displacement[i] =
+        std::sqrt((q.x - r.x) * (q.x - r.x) + (q.y - r.y) * (q.y - r.y) + (q.z - r.z) * (q.z - r.z));
+  }
+  return inspect::writeVtp(path, m.positions, m.triangles,
+                           {inspect::fieldOf<Float3>("normal", surface.normals()),
+                            inspect::fieldOf<Float4>("tangent_handedness", surface.tangents()),
+                            inspect::fieldOf<Float3>("plane_normal", std::span<const Float3>(planeNormal)),
+                            {"plane_offset_mm", 1, planeOffset},
+                            {"displacement_mm", 1, displacement}});
 }
 
 }  // namespace
@@ -106,6 +129,10 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
   } else {
     report["render_skipped"] = img.error().message;
   }
+
+  // Inspection: the poked organ with its shading fields, for ParaView.
+  if (auto vtp = writeInspection(surface, o.outDir / "organ_poked.vtp"); !vtp) return vtp.error();
+  report["inspection"] = "organ_poked.vtp";
 
   report["mesh"] = meshPath.string();
   report["material"] = material->name;

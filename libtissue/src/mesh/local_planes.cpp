@@ -5,45 +5,70 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fixed_moments.h"
 #include "vec3.h"
 
 namespace tissue::mesh {
 
 using namespace detail;
 
+struct IncrementalPlaneFitter::Moments : detail::FixedSums {};
+
 namespace {
 
-/// The least-squares plane of a point set from its moments about `origin` (François §2.2:
-/// "a least square fitting algorithm operating on the vertices ... in a spherical
-/// neighbourhood"): it passes through the centroid c, its normal N_S is the eigenvector of the
-/// covariance with the smallest eigenvalue, oriented like the vertex normal N_V. The plane is
-/// stored as (N_S, d) with P_V = V + d N_V on it (eq. 14).
-Float4 planeFromMoments(double count, const double s[3], const double ss[6], Float3 origin, Float3 vertex,
-                        Float3 vertexNormal) {
-  const Eigen::Vector3d mean(s[0] / count, s[1] / count, s[2] / count);
+/// The least-squares plane of a point set from its exact moments (François §2.2: "a least
+/// square fitting algorithm operating on the vertices ... in a spherical neighbourhood"): it
+/// passes through the centroid c, its normal N_S is the eigenvector of the covariance with the
+/// smallest eigenvalue, oriented like the vertex normal N_V. Stored as (N_S, d) with
+/// P_V = V + d N_V on the plane (eq. 14).
+Float4 planeFromSums(std::int64_t count, const detail::FixedSums& m, Float3 origin, Float3 vertex,
+                     Float3 vertexNormal) {
+  using detail::Int128;
+  // n^2 C = n S2 - S1 S1^T, exact in 128-bit integers; one rounding when converted.
+  const Int128 n = count;
+  const auto c = [&](int k, int i, int j) { return double(n * m.ss[k] - Int128(m.s[i]) * m.s[j]); };
+  const double scale = 1.0 / (double(count) * double(count) * detail::kQuantumPerMm * detail::kQuantumPerMm);
   Eigen::Matrix3d cov;
-  cov << ss[0], ss[1], ss[2], ss[1], ss[3], ss[4], ss[2], ss[4], ss[5];
-  cov = cov / count - mean * mean.transpose();
+  cov << c(0, 0, 0), c(1, 0, 1), c(2, 0, 2), c(1, 0, 1), c(3, 1, 1), c(4, 1, 2), c(2, 0, 2), c(4, 1, 2),
+      c(5, 2, 2);
+  cov *= scale;  // mm^2
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
   solver.computeDirect(cov, Eigen::ComputeEigenvectors);
-  Eigen::Vector3d n = solver.eigenvectors().col(0);  // eigenvalues ascend
+  Eigen::Vector3d normal = solver.eigenvectors().col(0);  // eigenvalues ascend
   const Eigen::Vector3d nv(vertexNormal.x, vertexNormal.y, vertexNormal.z);
-  if (n.dot(nv) < 0.0) n = -n;
+  if (normal.dot(nv) < 0.0) normal = -normal;
   // Offset along N_V to the plane: solve N_S . (V + d N_V - c) = 0. Where N_V is nearly
   // parallel to the plane (a fold) fall back to the distance along N_S.
-  const Eigen::Vector3d c = Eigen::Vector3d(origin.x, origin.y, origin.z) + mean;
+  const double inv = 1.0 / (double(count) * detail::kQuantumPerMm);
+  const Eigen::Vector3d centroid(double(origin.x) + double(m.s[0]) * inv,
+                                 double(origin.y) + double(m.s[1]) * inv,
+                                 double(origin.z) + double(m.s[2]) * inv);
   const Eigen::Vector3d v(vertex.x, vertex.y, vertex.z);
-  const double along = n.dot(nv);
-  const double d = n.dot(c - v) / (along > 0.1 ? along : 1.0);
-  return {float(n.x()), float(n.y()), float(n.z()), float(d)};
+  const double along = normal.dot(nv);
+  const double d = normal.dot(centroid - v) / (along > 0.1 ? along : 1.0);
+  return {float(normal.x()), float(normal.y()), float(normal.z()), float(d)};
 }
 
-void accumulate(double s[3], double ss[6], Float3 p, Float3 origin, double sign) {
-  const double x = double(p.x) - double(origin.x), y = double(p.y) - double(origin.y),
-               z = double(p.z) - double(origin.z);
-  s[0] += sign * x, s[1] += sign * y, s[2] += sign * z;
-  ss[0] += sign * x * x, ss[1] += sign * x * y, ss[2] += sign * x * z;
-  ss[3] += sign * y * y, ss[4] += sign * y * z, ss[5] += sign * z * z;
+/// The quantisation origin: the centre of the bounding box, rounded to the quantum so that
+/// quantising about it is an exact integer translation of quantising about any other.
+Float3 quantisationOrigin(std::span<const Float3> positions) {
+  if (positions.empty()) return {};
+  Float3 lo = positions[0], hi = positions[0];
+  for (const auto& p : positions) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  const auto snap = [](float a, float b) {
+    return float(std::round(0.5 * (double(a) + double(b)) * detail::kQuantumPerMm) / detail::kQuantumPerMm);
+  };
+  return {snap(lo.x, hi.x), snap(lo.y, hi.y), snap(lo.z, hi.z)};
+}
+
+std::vector<detail::FixedPoint> quantiseAll(std::span<const Float3> positions, Float3 origin) {
+  std::vector<detail::FixedPoint> q(positions.size());
+  for (std::size_t i = 0; i < q.size(); ++i)
+    q[i] = detail::quantise(positions[i], origin);
+  return q;
 }
 
 }  // namespace
@@ -61,13 +86,14 @@ PlaneDeviation comparePlanes(std::span<const Float4> a, std::span<const Float4> 
 
 void fitVertexPlanes(std::span<const Float3> positions, std::span<const Float3> normals,
                      const Neighbourhoods& hoods, std::span<Float4> planes) {
+  const Float3 origin = quantisationOrigin(positions);
+  const auto q = quantiseAll(positions, origin);
   for (std::size_t v = 0; v < hoods.vertexCount(); ++v) {
-    double s[3] = {0, 0, 0}, ss[6] = {0, 0, 0, 0, 0, 0};
-    const Float3 origin = positions[v];  // conditioning: moments about the vertex itself
+    detail::FixedSums sums;
     for (auto k = hoods.offsets[v]; k < hoods.offsets[v + 1]; ++k)
-      accumulate(s, ss, positions[hoods.indices[k]], origin, 1.0);
-    planes[v] = planeFromMoments(double(hoods.offsets[v + 1] - hoods.offsets[v]), s, ss, origin, positions[v],
-                                 normals[v]);
+      sums.add(q[hoods.indices[k]], 1);
+    planes[v] = planeFromSums(std::int64_t(hoods.offsets[v + 1] - hoods.offsets[v]), sums, origin,
+                              positions[v], normals[v]);
   }
 }
 
@@ -76,19 +102,23 @@ IncrementalPlaneFitter::IncrementalPlaneFitter(std::span<const Float3> restPosit
                                                const PlaneFitSettings& settings)
     : m_settings(settings),
       m_hoods(findNeighbourhoods(restPositions, settings.radiusMm(), triangles)),
-      m_origin(restPositions.begin(), restPositions.end()),
+      m_origin(quantisationOrigin(restPositions)),
       m_moments(restPositions.size()),
       m_fitted(restPositions.begin(), restPositions.end()),
       m_planes(restPositions.size()),
       m_dirtyStamp(restPositions.size(), 0) {}
 
+IncrementalPlaneFitter::~IncrementalPlaneFitter() = default;
+IncrementalPlaneFitter::IncrementalPlaneFitter(IncrementalPlaneFitter&&) noexcept = default;
+IncrementalPlaneFitter& IncrementalPlaneFitter::operator=(IncrementalPlaneFitter&&) noexcept = default;
+
 void IncrementalPlaneFitter::fitAll(std::span<const Float3> positions, std::span<const Float3> normals) {
+  const auto q = quantiseAll(positions, m_origin);
   for (std::size_t v = 0; v < m_hoods.vertexCount(); ++v) {
     Moments& m = m_moments[v];
-    std::fill(std::begin(m.s), std::end(m.s), 0.0);
-    std::fill(std::begin(m.ss), std::end(m.ss), 0.0);
+    m = Moments{};
     for (auto k = m_hoods.offsets[v]; k < m_hoods.offsets[v + 1]; ++k)
-      accumulate(m.s, m.ss, positions[m_hoods.indices[k]], m_origin[v], 1.0);
+      m.add(q[m_hoods.indices[k]], 1);
     solvePlane(std::uint32_t(v), positions, normals);
   }
   std::copy(positions.begin(), positions.end(), m_fitted.begin());
@@ -96,9 +126,8 @@ void IncrementalPlaneFitter::fitAll(std::span<const Float3> positions, std::span
 
 void IncrementalPlaneFitter::solvePlane(std::uint32_t v, std::span<const Float3> positions,
                                         std::span<const Float3> normals) {
-  const Moments& m = m_moments[v];
-  m_planes[v] = planeFromMoments(double(m_hoods.offsets[v + 1] - m_hoods.offsets[v]), m.s, m.ss, m_origin[v],
-                                 positions[v], normals[v]);
+  m_planes[v] = planeFromSums(std::int64_t(m_hoods.offsets[v + 1] - m_hoods.offsets[v]), m_moments[v],
+                              m_origin, positions[v], normals[v]);
 }
 
 RefitStats IncrementalPlaneFitter::update(std::span<const Float3> positions, std::span<const Float3> normals,
@@ -115,8 +144,8 @@ RefitStats IncrementalPlaneFitter::update(std::span<const Float3> positions, std
 RefitStats IncrementalPlaneFitter::updateMoved(std::span<const Float3> positions,
                                                std::span<const Float3> normals,
                                                std::span<const std::uint32_t> movedVertices) {
-  // A global deformation touches every plane many times over: updating moments vertex by
-  // vertex would cost more than summing each neighbourhood once, so fit from scratch then.
+  // A global deformation touches every plane many times over: adding differences vertex by
+  // vertex would cost more than summing each neighbourhood once, so sum from scratch then.
   std::size_t work = 0;
   for (auto v : movedVertices)
     work += m_hoods.offsets[v + 1] - m_hoods.offsets[v];
@@ -124,20 +153,20 @@ RefitStats IncrementalPlaneFitter::updateMoved(std::span<const Float3> positions
     fitAll(positions, normals);
     return {movedVertices.size(), m_hoods.vertexCount()};
   }
-  // Step 1: a moved vertex swaps its old position for its new one in the moments of every
-  // plane whose neighbourhood holds it (the relation is symmetric, so these are its own
-  // neighbours), and marks those planes dirty.
+  // Step 1: a moved vertex adds (new moments - old moments) to every plane whose neighbourhood
+  // holds it (the relation is symmetric, so these are its own neighbours) and marks it dirty.
   if (++m_stamp == 0) {  // wrapped: clear the stamps once every 2^32 updates
     std::fill(m_dirtyStamp.begin(), m_dirtyStamp.end(), 0u);
     m_stamp = 1;
   }
   m_dirtyList.clear();
   for (auto v : movedVertices) {
+    detail::FixedSums delta;
+    delta.add(detail::quantise(positions[v], m_origin), 1);
+    delta.add(detail::quantise(m_fitted[v], m_origin), -1);
     for (auto k = m_hoods.offsets[v]; k < m_hoods.offsets[v + 1]; ++k) {
       const auto j = m_hoods.indices[k];
-      Moments& m = m_moments[j];
-      accumulate(m.s, m.ss, m_fitted[v], m_origin[j], -1.0);
-      accumulate(m.s, m.ss, positions[v], m_origin[j], 1.0);
+      m_moments[j].add(delta);
       if (m_dirtyStamp[j] != m_stamp) {
         m_dirtyStamp[j] = m_stamp;
         m_dirtyList.push_back(j);

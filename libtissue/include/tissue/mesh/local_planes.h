@@ -69,21 +69,28 @@ struct RefitStats {
 
 /// Keeps the planes of a deforming mesh up to date, re-fitting only where it moved.
 ///
-/// Per plane it keeps the first and second moments of its neighbourhood (in double, about the
-/// rest-state centroid); a moved vertex updates the moments of every plane that contains it,
-/// and only those planes solve their 3x3 eigenproblem again.
+/// Per plane it keeps the first and second moments of its neighbourhood in exact fixed-point
+/// integers (positions quantised to 2^-20 mm about the rest-state box centre). A moved vertex
+/// adds the difference of its new and old moments to every plane that contains it, and only
+/// those planes solve their 3x3 eigenproblem again. Integer sums are exact and associative, so
+/// the incremental moments equal a from-scratch sum bit for bit, after any number of frames:
+/// an incremental re-fit gives exactly the planes of a full re-fit (fitVertexPlanes).
 class IncrementalPlaneFitter {
  public:
   /// \param restPositions  #V positions that define the neighbourhoods, mm
   /// \param triangles      topology (for the 1-ring)
   IncrementalPlaneFitter(std::span<const Float3> restPositions, std::span<const Triangle> triangles,
                          const PlaneFitSettings& settings = {});
+  ~IncrementalPlaneFitter();
+  IncrementalPlaneFitter(IncrementalPlaneFitter&&) noexcept;
+  IncrementalPlaneFitter& operator=(IncrementalPlaneFitter&&) noexcept;
 
-  /// Full re-fit at `positions` (also resets the moments, removing any accumulated rounding).
+  /// Full re-fit at `positions`: every plane's moments summed from scratch and solved.
   void fitAll(std::span<const Float3> positions, std::span<const Float3> normals);
 
   /// Incremental re-fit: vertices that moved by more than `toleranceMm` since the last fit
-  /// update their planes' moments; only those planes are solved again.
+  /// update their planes' moments; only those planes are solved again. With a tolerance of 0
+  /// the result equals fitAll exactly.
   RefitStats update(std::span<const Float3> positions, std::span<const Float3> normals,
                     float toleranceMm = 0.0f);
 
@@ -96,15 +103,12 @@ class IncrementalPlaneFitter {
   const PlaneFitSettings& settings() const { return m_settings; }
 
  private:
-  struct Moments {
-    double s[3];   // sum of (p - origin)
-    double ss[6];  // sum of (p - origin)(p - origin)^T, upper triangle xx xy xz yy yz zz
-  };
+  struct Moments;  // fixed-point sums, defined in local_planes.cpp
   void solvePlane(std::uint32_t v, std::span<const Float3> positions, std::span<const Float3> normals);
 
   PlaneFitSettings m_settings;
   Neighbourhoods m_hoods;
-  std::vector<Float3> m_origin;    // per plane: rest-state centroid (conditioning)
+  Float3 m_origin;                 // quantisation origin: rest-state bounding-box centre, mm
   std::vector<Moments> m_moments;  // per plane
   std::vector<Float3> m_fitted;    // positions at the last fit, per vertex
   std::vector<Float4> m_planes;    // per vertex (N_S, d)
