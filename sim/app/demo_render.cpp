@@ -34,10 +34,7 @@ namespace {
 
 /// The texture `name` of mesh `stem`: the build-time 1024 version, else the committed small one.
 Result<Image8> loadTexture(const std::string& stem, const std::string& name) {
-  for (const auto& dir : {generatedDataDir() / "textures" / stem, dataDir() / "textures" / stem}) {
-    const auto path = dir / (name + ".png");
-    if (std::filesystem::exists(path)) return readImage(path, 4);
-  }
+  if (const auto path = findDataTexture(stem, name); !path.empty()) return readImage(path, 4);
   return Error{"no texture '" + name + ".png' for mesh '" + stem + "' in " +
                (generatedDataDir() / "textures").string() + " or " + (dataDir() / "textures").string() +
                "; build the tissue_data target"};

@@ -1,6 +1,7 @@
 // tissue-sim render --mesh FILE --out IMAGE.png: one lit, normal-mapped image of a mesh.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 
 #include "command.h"
@@ -62,8 +63,12 @@ Result<Image8> readTexture(const std::string& path, const char* what) {
   return image;
 }
 
-int run(const RenderOptions& o, const GlobalOptions& global) {
+int run(RenderOptions o, const GlobalOptions& global) {
   const char* cmd = "render";
+  // A mesh of the project's own data gets its own textures unless others are given.
+  const auto stem = std::filesystem::path(o.mesh).stem().string();
+  if (o.normalMap.empty()) o.normalMap = findDataTexture(stem, "normal_map").string();
+  if (o.baseColor.empty()) o.baseColor = findDataTexture(stem, "base_color").string();
   if (o.width <= 0 || o.height <= 0) return fail(cmd, "--width and --height must be positive pixels");
   // Step 1: the mesh, its angle-weighted normals (per geometric vertex, so seams stay smooth)
   // and UV tangent frames.
@@ -78,7 +83,7 @@ int run(const RenderOptions& o, const GlobalOptions& global) {
   std::vector<Float4> tangents(m.positions.size());
   const bool hasUvs = m.hasUvs();
   if (hasUvs) {
-    mesh::computeTangentFrames(m.positions, m.uvs, m.triangles, normals, tangents);
+    mesh::computeTangentFrames(m.positions, m.uvs, m.triangles, normals, tangents, m.geometricIndex);
   } else {
     m.uvs.assign(m.positions.size(), Float2{});  // no UVs: shade with the vertex normals only
   }
@@ -136,6 +141,8 @@ int run(const RenderOptions& o, const GlobalOptions& global) {
   out["triangles"] = m.triangles.size();
   out["shading"] = hasUvs ? (o.normalMap.empty() ? "vertex normals (no --normal-map)" : "normal-mapped")
                           : "vertex normals (mesh has no UVs; textures ignored)";
+  out["normal_map"] = hasUvs ? o.normalMap : "";
+  out["base_color"] = hasUvs ? o.baseColor : "";
   printResult(global, out);
   return 0;
 }

@@ -9,7 +9,8 @@
 /// Neighbourhoods are taken in the rest state and kept under deformation (see
 /// docs/DECISIONS.md): they follow the material, so a plane changes continuously in time and
 /// re-fitting after a deformation only touches planes whose neighbourhood contains a vertex
-/// that moved.
+/// that moved. A change of topology (a cut or a tear) needs new neighbourhoods: construct a new
+/// IncrementalPlaneFitter on the new mesh.
 
 #include <cmath>
 #include <cstdint>
