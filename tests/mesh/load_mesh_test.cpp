@@ -135,6 +135,39 @@ TEST(LoadMesh, PartialUvsAreAnError) {
   EXPECT_NE(msg.find("face 2"), std::string::npos) << msg;
 }
 
+const char* kQuadPly =
+    "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+    "property float u\nproperty float v\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
+    "0 0 0 0 0\n1 0 0 1 0\n1 1 0 1 1\n0 1 0 0 1\n3 0 1 2\n3 0 2 3\n";
+
+TEST(LoadMesh, PlyKeepsPerVertexUvs) {
+  auto mesh = loadMesh(writeTestFile("quad.ply", kQuadPly), {.requireUvs = true});
+  ASSERT_TRUE(mesh.ok()) << mesh.error().message;
+  EXPECT_EQ(mesh->triangleCount(), 2u);
+  ASSERT_TRUE(mesh->hasUvs());
+  EXPECT_EQ(mesh->uvs[mesh->triangles[0][2]], (Float2{1, 1}));
+}
+
+TEST(LoadMesh, NonFiniteNumbersInTextPlyOffStlNameTheLine) {
+  std::string ply = kQuadPly;
+  ply.replace(ply.find("1 1 0 1 1"), 9, "1 nan 0 1 1");
+  EXPECT_NE(loadError(writeTestFile("nan.ply", ply)).find("nan.ply:14: non-finite"), std::string::npos);
+  EXPECT_NE(
+      loadError(writeTestFile("nan.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 -inf 0\n3 0 1 2\n")).find("nan.off:5"),
+      std::string::npos);
+  const auto stl =
+      "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 NaN 0\n"
+      "endloop\nendfacet\nendsolid t\n";
+  EXPECT_NE(loadError(writeTestFile("nan.stl", stl)).find("nan.stl:6"), std::string::npos);
+}
+
+TEST(LoadMesh, OutOfRangeIndexInPly) {
+  std::string ply = kQuadPly;
+  ply.replace(ply.find("3 0 2 3"), 7, "3 0 2 9");
+  const auto msg = loadError(writeTestFile("range.ply", ply));
+  EXPECT_NE(msg.find("face 2 refers to vertex 10"), std::string::npos) << msg;
+}
+
 TEST(LoadMesh, UnsupportedExtensionAndMissingFile) {
   EXPECT_NE(loadError(writeTestFile("mesh.xyz", "1 2 3\n")).find("unsupported extension"), std::string::npos);
   EXPECT_NE(loadError("/nonexistent/mesh.obj").find("no such file"), std::string::npos);

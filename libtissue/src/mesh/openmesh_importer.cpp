@@ -5,6 +5,7 @@
 #include <OpenMesh/Core/IO/importer/BaseImporter.hh>
 #include <algorithm>
 #include <cctype>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -118,6 +119,46 @@ class CapturedLog {
   std::streambuf* m_oldErr;
 };
 
+/// OpenMesh's text readers parse numbers with iostreams, which stop at "nan" or "inf" and then
+/// read the rest of the file out of step. So text PLY, OFF and STL files are scanned first:
+/// a non-finite number in the data is reported with its line. Binary files need no scan (their
+/// NaNs arrive as floats and validation names the vertex).
+Result<void> scanTextForNonFinite(const std::filesystem::path& path, const std::string& ext) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  if (!std::getline(in, line)) return {};
+  bool inData = ext == ".off";  // OFF: data starts after the first line
+  bool isText = true;
+  if (ext == ".stl") isText = line.rfind("solid", 0) == 0;
+  int lineNo = 1;
+  while (isText && std::getline(in, line)) {
+    ++lineNo;
+    std::istringstream tokens(line);
+    std::string token;
+    if (ext == ".ply" && !inData) {
+      tokens >> token;
+      if (token == "format" && (tokens >> token) && token != "ascii") return {};  // binary PLY
+      inData = token == "end_header";
+      continue;
+    }
+    if (ext == ".stl") {
+      if (!(tokens >> token) || token != "vertex") continue;
+    }
+    while (tokens >> token) {
+      std::string lower(token.size(), ' ');
+      std::transform(token.begin(), token.end(), lower.begin(),
+                     [](unsigned char c) { return char(std::tolower(c)); });
+      const auto start = lower.find_first_not_of("+-");
+      if (start != std::string::npos &&
+          (lower.compare(start, 3, "nan") == 0 || lower.compare(start, 3, "inf") == 0)) {
+        return Error{path.string() + ":" + std::to_string(lineNo) + ": non-finite number '" + token +
+                     "'; replace NaN/Inf coordinates with real numbers"};
+      }
+    }
+  }
+  return {};
+}
+
 }  // namespace
 
 Result<RawMesh> readRawMesh(const std::filesystem::path& path) {
@@ -132,6 +173,7 @@ Result<RawMesh> readRawMesh(const std::filesystem::path& path) {
                  "'; give an .obj, .ply, .off or .stl file"};
   }
   if (ext == ".obj") return readObj(path);
+  if (auto scan = scanTextForNonFinite(path, ext); !scan) return scan.error();
   RawMesh raw;
   RawImporter importer(raw);
   OpenMesh::IO::Options options = OpenMesh::IO::Options::FaceTexCoord | OpenMesh::IO::Options::VertexTexCoord;
