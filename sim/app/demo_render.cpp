@@ -48,7 +48,9 @@ Result<void> DemoRenderer::render(const mesh::DeformableSurface& surface, const 
   if (s.setupError) return *s.setupError;
   // Setup on first use: context, renderer, textures, a camera framing the rest shape.
   if (!s.renderer) {
-    auto ctx = context::createHeadlessContext({.width = 16, .height = 16});
+    context::ContextRequest request;
+    request.width = request.height = 16;  // the renderer draws into its own framebuffer
+    auto ctx = context::createHeadlessContext(request);
     if (!ctx) return *(s.setupError = ctx.error());
     s.context = std::move(*ctx);
     render::RendererSettings settings;

@@ -1,5 +1,6 @@
 // Context backends: creation, driver strings, version, backend choice, OSMesa's own entry points.
 #include <cstdlib>
+#include <iostream>
 
 #include "gl_test_support.h"
 #include "tissue/context/headless_context.h"
@@ -80,3 +81,28 @@ TEST(LoaderTest, FailsCleanlyWithoutAContext) {
 
 }  // namespace
 }  // namespace tissue::test
+
+namespace tissue::context {
+namespace {
+
+TEST(EglPlatformTest, EachPlatformCanBeAskedFor) {
+  for (const std::string platform : {"device", "surfaceless"}) {
+    ContextRequest request;
+    request.eglPlatform = platform;
+    auto context = createEglContext(request);
+    if (!context) {
+      std::cout << "[ SKIPPED  ] EGL " << platform << ": " << context.error().message << "\n";
+      continue;
+    }
+    EXPECT_EQ((*context)->info().platform, platform);
+    EXPECT_GE((*context)->info().major * 10 + (*context)->info().minor, 33);
+  }
+  ContextRequest bad;
+  bad.eglPlatform = "x11";
+  auto r = createEglContext(bad);
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error().message.find("device or surfaceless"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tissue::context

@@ -4,6 +4,7 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -110,9 +111,16 @@ Result<std::unique_ptr<GlContext>> createEglContext(const ContextRequest& reques
       reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
   if (!getPlatformDisplay) return Error{"egl: no eglGetPlatformDisplayEXT"};
   std::string why;
+  std::string only = request.eglPlatform;
+  if (const char* env = std::getenv("TISSUE_EGL_PLATFORM"); only.empty() && env) only = env;
+  if (!only.empty() && only != "device" && only != "surfaceless") {
+    return Error{"egl: unknown EGL platform '" + only + "' (TISSUE_EGL_PLATFORM); use device or surfaceless"};
+  }
 
   // Step 1: the device platform: one display per GPU (or Mesa's software device).
-  if (hasExtension(client, "EGL_EXT_platform_device")) {
+  if (only == "surfaceless") {
+    why = "device: not tried (surfaceless asked for)";
+  } else if (hasExtension(client, "EGL_EXT_platform_device")) {
     auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
     EGLint count = 0;
     std::vector<EGLDeviceEXT> devices(16);
@@ -134,7 +142,9 @@ Result<std::unique_ptr<GlContext>> createEglContext(const ContextRequest& reques
   }
 
   // Step 2: Mesa's surfaceless platform.
-  if (hasExtension(client, "EGL_MESA_platform_surfaceless")) {
+  if (only == "device") {
+    why += "; surfaceless: not tried (device asked for)";
+  } else if (hasExtension(client, "EGL_MESA_platform_surfaceless")) {
     EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     auto context = tryDisplay(display, request, "surfaceless");
     if (context) return context;

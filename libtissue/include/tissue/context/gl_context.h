@@ -20,6 +20,8 @@ struct ContextRequest {
   int height = 64;       ///< pixels
   bool visible = false;  ///< GLFW only: show the window
   bool debug = false;    ///< ask for a debug context where the backend supports it
+  /// EGL only: "device", "surfaceless", or empty: $TISSUE_EGL_PLATFORM, else device then surfaceless.
+  std::string eglPlatform;
 };
 
 /// Who made the context and what the driver says about itself.
