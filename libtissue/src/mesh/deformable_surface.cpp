@@ -7,6 +7,7 @@
 #include "tissue/mesh/load_mesh.h"
 #include "tissue/mesh/tangent_frames.h"
 #include "tissue/mesh/vertex_normals.h"
+#include "tissue/mesh/worker_pool.h"
 
 namespace tissue::mesh {
 
@@ -27,6 +28,10 @@ std::vector<Triangle> geometricTrianglesOf(const SurfaceMesh& mesh) {
 
 namespace {
 
+// Below these counts a second thread costs more than it saves.
+constexpr std::size_t kMinTrianglesPerThread = 4096;
+constexpr std::size_t kMinVerticesPerThread = 2048;
+
 /// Vertices on an edge used by exactly one triangle (an open border).
 std::vector<std::uint32_t> findBoundary(std::span<const Triangle> tris, std::size_t vertexCount) {
   std::unordered_map<std::uint64_t, int> uses;
@@ -46,7 +51,8 @@ std::vector<std::uint32_t> findBoundary(std::span<const Triangle> tris, std::siz
 
 }  // namespace
 
-Result<DeformableSurface> DeformableSurface::create(SurfaceMesh mesh, const PlaneFitSettings& planeSettings) {
+Result<DeformableSurface> DeformableSurface::create(SurfaceMesh mesh, const PlaneFitSettings& planeSettings,
+                                                    unsigned threadCount) {
   if (auto ok = validateMesh(mesh, "deformable surface"); !ok) return ok.error();
   if (!mesh.hasUvs()) {
     return Error{
@@ -59,11 +65,13 @@ Result<DeformableSurface> DeformableSurface::create(SurfaceMesh mesh, const Plan
   }
   auto geoRest = geometricPositionsOf(mesh);
   auto geoTris = geometricTrianglesOf(mesh);
-  return DeformableSurface(std::move(mesh), std::move(geoRest), std::move(geoTris), planeSettings);
+  return DeformableSurface(std::move(mesh), std::move(geoRest), std::move(geoTris), planeSettings,
+                           threadCount);
 }
 
 DeformableSurface::DeformableSurface(SurfaceMesh mesh, std::vector<Float3> geoRest,
-                                     std::vector<Triangle> geoTriangles, const PlaneFitSettings& settings)
+                                     std::vector<Triangle> geoTriangles, const PlaneFitSettings& settings,
+                                     unsigned threadCount)
     : m_mesh(std::move(mesh)),
       m_geoRest(std::move(geoRest)),
       m_geoPositions(m_geoRest),
@@ -73,10 +81,32 @@ DeformableSurface::DeformableSurface(SurfaceMesh mesh, std::vector<Float3> geoRe
       m_fitter(m_geoRest, m_geoTriangles, settings),
       m_normals(m_mesh.positions.size()),
       m_tangents(m_mesh.positions.size()),
-      m_planes(m_mesh.positions.size()) {
-  computeVertexNormals(m_geoPositions, m_geoTriangles, m_geoNormals);
+      m_planes(m_mesh.positions.size()),
+      m_geoCorners(buildVertexCorners(m_geoTriangles, m_geoRest.size())),
+      m_tangentTopology(buildTangentTopology(m_mesh.uvs, m_mesh.triangles, m_mesh.geometricIndex)),
+      m_triangleGeometry(m_mesh.triangles.size()),
+      m_pool(std::make_unique<WorkerPool>(threadCount)) {
+  computeNormals();
   m_fitter.fitAll(m_geoPositions, m_geoNormals);
-  computeShading();
+  copyPlanes();
+  // Render copies of one geometric vertex normally share its position; where a mesh came in
+  // with split copies apart, tangents follow the render positions as given.
+  const auto& gi = m_mesh.geometricIndex;
+  for (std::size_t i = 0; i < m_mesh.positions.size(); ++i)
+    if (!(m_mesh.positions[i] == m_geoPositions[gi[i]])) {
+      computeTriangleGeometry(m_mesh.positions, m_mesh.triangles, m_tangentTopology.uvBases, 0,
+                              m_mesh.triangles.size(), m_triangleGeometry);
+      break;
+    }
+  computeTangents();
+}
+
+DeformableSurface::~DeformableSurface() = default;
+DeformableSurface::DeformableSurface(DeformableSurface&&) noexcept = default;
+DeformableSurface& DeformableSurface::operator=(DeformableSurface&&) noexcept = default;
+
+unsigned DeformableSurface::threadCount() const {
+  return m_pool->threadCount();
 }
 
 SurfaceUpdateStats DeformableSurface::update(std::span<const Float3> geometricPositions, float toleranceMm) {
@@ -89,40 +119,52 @@ SurfaceUpdateStats DeformableSurface::update(std::span<const Float3> geometricPo
   stats.gatherMs = clock.elapsedMs();
   // Phase: normals, per geometric vertex so they agree across UV seams.
   clock.restart();
-  computeVertexNormals(m_geoPositions, m_geoTriangles, m_geoNormals);
-  for (std::size_t i = 0; i < m_normals.size(); ++i)
-    m_normals[i] = m_geoNormals[m_mesh.geometricIndex[i]];
+  computeNormals();
   stats.normalsMs = clock.elapsedMs();
   // Phase: local planes, re-fitted only where a neighbourhood moved.
   clock.restart();
   stats.refit = m_fitter.update(m_geoPositions, m_geoNormals, toleranceMm);
-  const auto planes = m_fitter.planes();
-  for (std::size_t i = 0; i < m_planes.size(); ++i)
-    m_planes[i] = planes[m_mesh.geometricIndex[i]];
+  copyPlanes();
   stats.planesMs = clock.elapsedMs();
   // Phase: tangent frames, per render vertex from each chart's own UVs.
   clock.restart();
-  computeTangentFrames(m_mesh.positions, m_mesh.uvs, m_mesh.triangles, m_normals, m_tangents,
-                       m_mesh.geometricIndex);
+  computeTangents();
   stats.tangentsMs = clock.elapsedMs();
   return stats;
 }
 
 void DeformableSurface::refitAllPlanes() {
   m_fitter.fitAll(m_geoPositions, m_geoNormals);
-  const auto planes = m_fitter.planes();
-  for (std::size_t i = 0; i < m_planes.size(); ++i)
-    m_planes[i] = planes[m_mesh.geometricIndex[i]];
+  copyPlanes();
 }
 
-void DeformableSurface::computeShading() {
-  for (std::size_t i = 0; i < m_normals.size(); ++i)
-    m_normals[i] = m_geoNormals[m_mesh.geometricIndex[i]];
+void DeformableSurface::computeNormals() {
+  // Per triangle, once: face normal, corner angles and (for the tangent phase) UV gradients.
+  // Render triangle t is geometric triangle t re-indexed, so one pass serves both.
+  m_pool->parallelFor(m_geoTriangles.size(), kMinTrianglesPerThread, [&](std::size_t b, std::size_t e) {
+    computeTriangleGeometry(m_geoPositions, m_geoTriangles, m_tangentTopology.uvBases, b, e,
+                            m_triangleGeometry);
+  });
+  // Per geometric vertex: gather its corners, then hand the normal to its render copies.
+  const std::size_t groups = std::min(m_geoNormals.size(), m_tangentTopology.groupCount());
+  const std::uint32_t* offsets = m_tangentTopology.copyOffsets.data();
+  const std::uint32_t* copies = m_tangentTopology.copies.data();
+  m_pool->parallelFor(m_geoNormals.size(), kMinVerticesPerThread, [&](std::size_t b, std::size_t e) {
+    gatherVertexNormals(m_triangleGeometry, m_geoCorners, b, e, m_geoNormals);
+    for (std::size_t g = b; g < std::min(e, groups); ++g)
+      for (std::uint32_t j = offsets[g]; j < offsets[g + 1]; ++j)
+        m_normals[copies[j]] = m_geoNormals[g];
+  });
+}
+
+void DeformableSurface::computeTangents() {
+  computeTangentFrames(m_triangleGeometry, m_tangentTopology, m_normals, m_tangents, m_pool.get());
+}
+
+void DeformableSurface::copyPlanes() {
   const auto planes = m_fitter.planes();
   for (std::size_t i = 0; i < m_planes.size(); ++i)
     m_planes[i] = planes[m_mesh.geometricIndex[i]];
-  computeTangentFrames(m_mesh.positions, m_mesh.uvs, m_mesh.triangles, m_normals, m_tangents,
-                       m_mesh.geometricIndex);
 }
 
 }  // namespace tissue::mesh

@@ -1,10 +1,9 @@
 #include "tissue/mesh/tangent_frames.h"
 
-#include <algorithm>
 #include <cmath>
-#include <unordered_map>
 #include <vector>
 
+#include "tissue/mesh/worker_pool.h"
 #include "vec3.h"
 
 namespace tissue::mesh {
@@ -13,35 +12,61 @@ using namespace detail;
 
 namespace {
 
-/// Seam copies i, j of one geometric vertex are "alike" when their accumulated u and v
-/// directions agree within 45 degrees (so the handedness agrees too); alike copies get the
-/// sum of their gradients.
-void poolAlikeSeamCopies(std::span<const std::uint32_t> geometricIndex, std::vector<Float3>& du,
-                         std::vector<Float3>& dv) {
-  std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> copies;
-  for (std::uint32_t i = 0; i < geometricIndex.size(); ++i)
-    copies[geometricIndex[i]].push_back(i);
+constexpr std::size_t kMinGroupsPerThread = 2048;
+
+/// Angle-weighted sums of the unit UV gradients of the triangles around render vertex i.
+void gatherGradients(std::span<const TriangleGeometry> geometry, const VertexCorners& corners,
+                     std::uint32_t i, Float3& du, Float3& dv) {
+  du = dv = Float3{};
+  for (std::uint32_t j = corners.offsets[i]; j < corners.offsets[i + 1]; ++j) {
+    const std::uint32_t c = corners.corners[j];
+    const TriangleGeometry& g = geometry[c / 3];
+    const float w = g.angles[c % 3];
+    du = du + g.dPdu * w;
+    dv = dv + g.dPdv * w;
+  }
+}
+
+/// Gram-Schmidt of the u direction against the normal; handedness from the v direction's side.
+Float4 orthonormalFrame(Float3 n, Float3 du, Float3 dv) {
+  Float3 t = du - n * dot(n, du);
+  if (length(t) < 1e-12f) {
+    // No usable u direction (no UV area around the vertex): any unit vector orthogonal to n.
+    const Float3 axis = std::abs(n.x) < 0.9f ? Float3{1, 0, 0} : Float3{0, 1, 0};
+    t = axis - n * dot(n, axis);
+  }
+  t = normalizeOr(t, Float3{1, 0, 0});
+  const float w = dot(cross(n, t), dv) < 0.0f ? -1.0f : 1.0f;
+  return {t.x, t.y, t.z, w};
+}
+
+/// Frames of one seam group of k > 1 copies. Copies a, b are "alike" when their accumulated u
+/// and v directions agree within 45 degrees (so the handedness agrees too); each copy gets the
+/// sum, in ascending copy order, of its own gradients and those of the copies alike to it.
+/// `scratch` is reused across groups (4 k entries).
+void poolSeamGroup(std::span<const TriangleGeometry> geometry, const TangentTopology& topology,
+                   std::span<const Float3> normals, std::span<const std::uint32_t> group,
+                   std::vector<Float3>& scratch, std::span<Float4> tangents) {
+  const std::size_t k = group.size();
+  scratch.resize(4 * k);
+  Float3* du = scratch.data();
+  Float3* dv = du + k;
+  Float3* unitU = dv + k;
+  Float3* unitV = unitU + k;
+  for (std::size_t a = 0; a < k; ++a) {
+    gatherGradients(geometry, topology.corners, group[a], du[a], dv[a]);
+    unitU[a] = normalizeOr(du[a], Float3{});
+    unitV[a] = normalizeOr(dv[a], Float3{});
+  }
   const float cos45 = std::sqrt(0.5f);
-  const auto alike = [&](std::uint32_t a, std::uint32_t b) {
-    const Float3 ua = normalizeOr(du[a], Float3{}), ub = normalizeOr(du[b], Float3{});
-    const Float3 va = normalizeOr(dv[a], Float3{}), vb = normalizeOr(dv[b], Float3{});
-    return dot(ua, ub) > cos45 && dot(va, vb) > cos45;
-  };
-  std::vector<Float3> pooledU, pooledV;
-  for (auto& [geo, list] : copies) {
-    if (list.size() < 2) continue;
-    pooledU.assign(list.size(), Float3{});
-    pooledV.assign(list.size(), Float3{});
-    for (std::size_t a = 0; a < list.size(); ++a)
-      for (std::size_t b = 0; b < list.size(); ++b)
-        if (a == b || alike(list[a], list[b])) {
-          pooledU[a] = pooledU[a] + du[list[b]];
-          pooledV[a] = pooledV[a] + dv[list[b]];
-        }
-    for (std::size_t a = 0; a < list.size(); ++a) {
-      du[list[a]] = pooledU[a];
-      dv[list[a]] = pooledV[a];
-    }
+  for (std::size_t a = 0; a < k; ++a) {
+    Float3 pooledU{}, pooledV{};
+    for (std::size_t b = 0; b < k; ++b)
+      if (a == b || (dot(unitU[a], unitU[b]) > cos45 && dot(unitV[a], unitV[b]) > cos45)) {
+        pooledU = pooledU + du[b];
+        pooledV = pooledV + dv[b];
+      }
+    tangents[group[a]] = orthonormalFrame(normals[group[a]], pooledU, pooledV);
   }
 }
 
@@ -50,42 +75,39 @@ void poolAlikeSeamCopies(std::span<const std::uint32_t> geometricIndex, std::vec
 void computeTangentFrames(std::span<const Float3> positions, std::span<const Float2> uvs,
                           std::span<const Triangle> triangles, std::span<const Float3> normals,
                           std::span<Float4> tangents, std::span<const std::uint32_t> geometricIndex) {
-  // Step 1: accumulate each triangle's UV gradients dP/du and dP/dv (Lengyel 2001) at its
-  // corners, weighted by the corner angle so the result does not depend on triangulation.
-  std::vector<Float3> du(positions.size()), dv(positions.size());
-  for (const auto& tri : triangles) {
-    const Float3 e1 = positions[tri[1]] - positions[tri[0]];
-    const Float3 e2 = positions[tri[2]] - positions[tri[0]];
-    const float s1 = uvs[tri[1]].x - uvs[tri[0]].x, t1 = uvs[tri[1]].y - uvs[tri[0]].y;
-    const float s2 = uvs[tri[2]].x - uvs[tri[0]].x, t2 = uvs[tri[2]].y - uvs[tri[0]].y;
-    const float det = s1 * t2 - s2 * t1;
-    if (std::abs(det) < 1e-20f) continue;  // no UV area: no gradient information
-    const float r = 1.0f / det;
-    const Float3 gu = (e1 * t2 - e2 * t1) * r;  // dP/du
-    const Float3 gv = (e2 * s1 - e1 * s2) * r;  // dP/dv
-    for (int k = 0; k < 3; ++k) {
-      const Float3 a = normalizeOr(positions[tri[(k + 1) % 3]] - positions[tri[k]], Float3{});
-      const Float3 b = normalizeOr(positions[tri[(k + 2) % 3]] - positions[tri[k]], Float3{});
-      const float w = std::acos(std::clamp(dot(a, b), -1.0f, 1.0f));
-      du[tri[k]] = du[tri[k]] + normalizeOr(gu, Float3{}) * w;
-      dv[tri[k]] = dv[tri[k]] + normalizeOr(gv, Float3{}) * w;
-    }
-  }
+  const TangentTopology topology = buildTangentTopology(uvs, triangles, geometricIndex);
+  std::vector<TriangleGeometry> geometry(triangles.size());
+  computeTriangleGeometry(positions, triangles, topology.uvBases, 0, triangles.size(), geometry);
+  computeTangentFrames(geometry, topology, normals, tangents);
+}
+
+void computeTangentFramesOfGroups(std::span<const TriangleGeometry> geometry, const TangentTopology& topology,
+                                  std::span<const Float3> normals, std::size_t firstGroup,
+                                  std::size_t lastGroup, std::span<Float4> tangents) {
+  // Step 1: accumulate each triangle's unit UV gradients (Lengyel 2001) at its corners,
+  // weighted by the corner angle so the result does not depend on triangulation.
   // Step 2: pool the gradients of seam copies whose charts are oriented alike.
-  if (!geometricIndex.empty()) poolAlikeSeamCopies(geometricIndex, du, dv);
-  // Step 3: Gram-Schmidt against the normal; handedness from the bitangent's side.
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    const Float3 n = normals[i];
-    Float3 t = du[i] - n * dot(n, du[i]);
-    if (length(t) < 1e-12f) {
-      // No usable u direction (no UV area around the vertex): any unit vector orthogonal to n.
-      const Float3 axis = std::abs(n.x) < 0.9f ? Float3{1, 0, 0} : Float3{0, 1, 0};
-      t = axis - n * dot(n, axis);
+  // Step 3: Gram-Schmidt against the normal.
+  std::vector<Float3> scratch;
+  const std::uint32_t* offsets = topology.copyOffsets.data();
+  for (std::size_t g = firstGroup; g < lastGroup; ++g) {
+    const std::span<const std::uint32_t> group(topology.copies.data() + offsets[g],
+                                               offsets[g + 1] - offsets[g]);
+    if (group.size() == 1) {
+      Float3 du, dv;
+      gatherGradients(geometry, topology.corners, group[0], du, dv);
+      tangents[group[0]] = orthonormalFrame(normals[group[0]], du, dv);
+    } else if (group.size() > 1) {
+      poolSeamGroup(geometry, topology, normals, group, scratch, tangents);
     }
-    t = normalizeOr(t, Float3{1, 0, 0});
-    const float w = dot(cross(n, t), dv[i]) < 0.0f ? -1.0f : 1.0f;
-    tangents[i] = {t.x, t.y, t.z, w};
   }
+}
+
+void computeTangentFrames(std::span<const TriangleGeometry> geometry, const TangentTopology& topology,
+                          std::span<const Float3> normals, std::span<Float4> tangents, WorkerPool* pool) {
+  parallelFor(pool, topology.groupCount(), kMinGroupsPerThread, [&](std::size_t b, std::size_t e) {
+    computeTangentFramesOfGroups(geometry, topology, normals, b, e, tangents);
+  });
 }
 
 }  // namespace tissue::mesh

@@ -1,32 +1,44 @@
 #include "tissue/mesh/vertex_normals.h"
 
-#include <algorithm>
-#include <cmath>
 #include <vector>
 
+#include "tissue/mesh/worker_pool.h"
 #include "vec3.h"
 
 namespace tissue::mesh {
 
 using namespace detail;
 
+namespace {
+constexpr std::size_t kMinVerticesPerThread = 2048;
+}  // namespace
+
 void computeVertexNormals(std::span<const Float3> positions, std::span<const Triangle> triangles,
                           std::span<Float3> normals) {
-  std::fill(normals.begin(), normals.end(), Float3{0.0f, 0.0f, 0.0f});
-  for (const auto& tri : triangles) {
-    const Float3 p[3] = {positions[tri[0]], positions[tri[1]], positions[tri[2]]};
-    const Float3 n = normalizeOr(cross(p[1] - p[0], p[2] - p[0]), Float3{});
-    for (int k = 0; k < 3; ++k) {
-      // Interior angle at corner k: the weight of Thürmer and Wüthrich (1998).
-      const Float3 e1 = normalizeOr(p[(k + 1) % 3] - p[k], Float3{});
-      const Float3 e2 = normalizeOr(p[(k + 2) % 3] - p[k], Float3{});
-      const float angle = std::acos(std::clamp(dot(e1, e2), -1.0f, 1.0f));
-      Float3& out = normals[tri[k]];
-      out = out + n * angle;
+  std::vector<TriangleGeometry> geometry(triangles.size());
+  computeTriangleGeometry(positions, triangles, {}, 0, triangles.size(), geometry);
+  computeVertexNormals(geometry, buildVertexCorners(triangles, normals.size()), normals);
+}
+
+void gatherVertexNormals(std::span<const TriangleGeometry> geometry, const VertexCorners& corners,
+                         std::size_t first, std::size_t last, std::span<Float3> normals) {
+  const std::uint32_t* offsets = corners.offsets.data();
+  const std::uint32_t* list = corners.corners.data();
+  for (std::size_t v = first; v < last; ++v) {
+    Float3 sum{};
+    for (std::uint32_t i = offsets[v]; i < offsets[v + 1]; ++i) {
+      const std::uint32_t c = list[i];
+      const TriangleGeometry& g = geometry[c / 3];
+      sum = sum + g.normal * g.angles[c % 3];
     }
+    normals[v] = normalizeOr(sum, Float3{0.0f, 0.0f, 1.0f});
   }
-  for (auto& n : normals)
-    n = normalizeOr(n, Float3{0.0f, 0.0f, 1.0f});
+}
+
+void computeVertexNormals(std::span<const TriangleGeometry> geometry, const VertexCorners& corners,
+                          std::span<Float3> normals, WorkerPool* pool) {
+  parallelFor(pool, normals.size(), kMinVerticesPerThread,
+              [&](std::size_t b, std::size_t e) { gatherVertexNormals(geometry, corners, b, e, normals); });
 }
 
 }  // namespace tissue::mesh

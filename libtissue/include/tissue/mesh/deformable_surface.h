@@ -5,14 +5,19 @@
 /// texture mapping, the planes re-fitted only where the mesh moved.
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "tissue/core/result.h"
 #include "tissue/core/surface_mesh.h"
 #include "tissue/mesh/local_planes.h"
+#include "tissue/mesh/shading_topology.h"
+#include "tissue/mesh/triangle_geometry.h"
 
 namespace tissue::mesh {
+
+class WorkerPool;
 
 /// Wall-clock cost of one update, per phase (ms), and what the plane re-fit touched.
 struct SurfaceUpdateStats {
@@ -28,11 +33,23 @@ struct SurfaceUpdateStats {
 /// The simulator moves geometric vertices (one per surface point); the renderer draws render
 /// vertices (split at UV seams). Normals and planes are computed per geometric vertex so they
 /// are continuous across seams; tangents per render vertex, from each chart's own UVs.
+///
+/// Everything that does not change while the surface deforms (vertex -> corner lists, UV
+/// constants, seam groups) is built once in create(); each update computes the triangles'
+/// shading geometry once and gathers it per vertex on a small worker pool. Results do not
+/// depend on the number of threads, and equal computeVertexNormals / computeTangentFrames.
 class DeformableSurface {
  public:
   /// Validates `mesh` and computes everything at the rest state. Fails when the mesh is
   /// invalid or has no UVs (tangent frames need them).
-  static Result<DeformableSurface> create(SurfaceMesh mesh, const PlaneFitSettings& planeSettings = {});
+  /// \param threadCount  threads for the per-frame update, the caller's included; 0 picks the
+  ///                     hardware's concurrency
+  static Result<DeformableSurface> create(SurfaceMesh mesh, const PlaneFitSettings& planeSettings = {},
+                                          unsigned threadCount = 0);
+
+  ~DeformableSurface();
+  DeformableSurface(DeformableSurface&&) noexcept;
+  DeformableSurface& operator=(DeformableSurface&&) noexcept;
 
   /// Moves the surface: `geometricPositions` holds one position (mm) per geometric vertex.
   /// Vertices that moved less than `toleranceMm` keep their planes.
@@ -58,11 +75,15 @@ class DeformableSurface {
 
   const SurfaceMesh& mesh() const { return m_mesh; }
   const IncrementalPlaneFitter& planeFitter() const { return m_fitter; }
+  /// Threads the update runs on, the caller's included.
+  unsigned threadCount() const;
 
  private:
   DeformableSurface(SurfaceMesh mesh, std::vector<Float3> geoRest, std::vector<Triangle> geoTriangles,
-                    const PlaneFitSettings& settings);
-  void computeShading();
+                    const PlaneFitSettings& settings, unsigned threadCount);
+  void computeNormals();
+  void computeTangents();
+  void copyPlanes();
 
   SurfaceMesh m_mesh;
   std::vector<Float3> m_geoRest;
@@ -74,6 +95,11 @@ class DeformableSurface {
   std::vector<Float3> m_normals;
   std::vector<Float4> m_tangents;
   std::vector<Float4> m_planes;
+  // Per-frame-invariant topology and per-frame scratch of the shading update.
+  VertexCorners m_geoCorners;
+  TangentTopology m_tangentTopology;
+  std::vector<TriangleGeometry> m_triangleGeometry;
+  std::unique_ptr<WorkerPool> m_pool;
 };
 
 /// Geometric positions (one per geometric vertex) of a render mesh.

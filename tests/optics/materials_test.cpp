@@ -1,0 +1,91 @@
+// The material library: Jensen's table, d'Eon's Gaussians, the project's tissue materials.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+#include "tissue/optics/materials.h"
+
+namespace tissue::optics {
+namespace {
+
+const std::filesystem::path kReference = std::filesystem::path(TISSUE_TEST_SHARED_DIR) / "reference";
+
+TEST(Materials, JensenTableHasTwelveMaterialsFoundIgnoringCase) {
+  auto all = loadJensenMaterials(kReference / "jensen2001_materials.tsv");
+  ASSERT_TRUE(all.ok()) << all.error().message;
+  EXPECT_EQ(all->size(), 12u);
+  auto skin = findMaterial(*all, "skin1");
+  ASSERT_TRUE(skin.ok());
+  EXPECT_EQ(skin->name, "Skin1");
+  EXPECT_EQ(skin->sigmaS[0], 0.74);
+  EXPECT_EQ(skin->sigmaA[2], 0.48);
+  EXPECT_EQ(skin->eta, 1.3);
+  EXPECT_EQ(skin->sigmaSPrime(1), 0.88);
+  EXPECT_TRUE(findMaterial(*all, "WHOLEMILK").ok());
+  EXPECT_EQ(findMaterial(*all, "marble")->eta, 1.5);
+  EXPECT_EQ(findMaterial(*all, "Chicken1")->sigmaA[0], 0.015);  // the corrected value, not 0.0015
+  auto missing = findMaterial(*all, "skin3");
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.error().message.find("Skin2"), std::string::npos);  // lists the known names
+  const auto medium = halfSpace(*skin, 2);
+  EXPECT_EQ(medium.layers[0].mua, 0.48);
+  EXPECT_TRUE(std::isinf(medium.layers[0].thickness));
+}
+
+TEST(Materials, DeonColumnsSumToOneAndTheProfileIntegratesToOne) {
+  auto sum = loadDeonGaussians(kReference / "deon_skin_gaussians.tsv");
+  ASSERT_TRUE(sum.ok()) << sum.error().message;
+  ASSERT_EQ(sum->varianceMm2.size(), 6u);
+  for (int c = 0; c < kChannels; ++c) {
+    double total = 0;
+    for (double w : sum->weights[static_cast<std::size_t>(c)])
+      total += w;
+    EXPECT_NEAR(total, 1.0, 1e-9) << "channel " << c;
+    // Integral of R(r) 2 pi r dr out to 30 mm (8 standard deviations of the widest Gaussian).
+    const int n = 300000;
+    const double h = 30.0 / n;
+    double integral = 0;
+    for (int i = 0; i < n; ++i) {
+      const double r = (i + 0.5) * h;
+      integral += gaussianSumProfile(*sum, c, r) * 2.0 * std::numbers::pi * r * h;
+    }
+    EXPECT_NEAR(integral, 1.0, 1e-6);
+  }
+}
+
+TEST(Materials, TissueMaterialUsesItsFirstLayer) {
+  auto liver = loadTissueMaterial(std::filesystem::path(TISSUE_TEST_DATA_DIR) / "materials" / "liver.json");
+  ASSERT_TRUE(liver.ok()) << liver.error().message;
+  EXPECT_EQ(liver->name, "liver");
+  EXPECT_DOUBLE_EQ(liver->sigmaS[2], 2.0);
+  EXPECT_DOUBLE_EQ(liver->sigmaA[0], 0.5);  // sigma_t 1.5 - sigma_s 1.0
+  EXPECT_DOUBLE_EQ(liver->g, 0.8);
+  EXPECT_DOUBLE_EQ(liver->eta, 1.3);
+  EXPECT_DOUBLE_EQ(liver->sigmaSPrime(0), 0.2);
+}
+
+TEST(Materials, BadTablesAndFilesGiveErrorsNamingThePlace) {
+  const auto dir = std::filesystem::path(TISSUE_TEST_OUTPUT_DIR) / "optics";
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream(dir / "bad.tsv")
+        << "material\tsps_R\n# comment\nSkin1\t0.74\t0.88\t1.01\t0.032\tx\t0.48\t1.3\n";
+  }
+  auto bad = loadJensenMaterials(dir / "bad.tsv");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().message.find("line 3"), std::string::npos) << bad.error().message;
+  EXPECT_NE(bad.error().message.find("'x'"), std::string::npos) << bad.error().message;
+  EXPECT_FALSE(loadJensenMaterials(dir / "missing.tsv").ok());
+  {
+    std::ofstream(dir / "bad_material.json") << R"({"ior": 1.3, "layers": [{"g": 0.8, "sigma_s": [1, 1]}]})";
+  }
+  auto tissue = loadTissueMaterial(dir / "bad_material.json");
+  ASSERT_FALSE(tissue.ok());
+  EXPECT_NE(tissue.error().message.find("layers[0].sigma_s"), std::string::npos) << tissue.error().message;
+}
+
+}  // namespace
+}  // namespace tissue::optics

@@ -1,0 +1,76 @@
+#!/usr/bin/env python3
+"""Checks on the viewer's screenshots, standard library only (no numpy, no PIL).
+
+png_check.py organ A.png      the picture is not one colour and the organ covers 5-95 % of it
+png_check.py differ A.png B.png   at least 100 pixels differ clearly (> 24 levels in a channel)
+"""
+import struct
+import sys
+import zlib
+
+
+def read_png(path):
+    """8-bit RGB or RGBA PNG, non-interlaced -> (width, height, channels, rows of bytes)."""
+    data = open(path, "rb").read()
+    if data[:8] != b"\x89PNG\r\n\x1a\n":
+        sys.exit(f"FAIL: {path} is not a PNG")
+    pos, idat = 8, b""
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            width, height, depth, color, _, _, interlace = struct.unpack(">IIBBBBB", body)
+            if depth != 8 or color not in (2, 6) or interlace:
+                sys.exit(f"FAIL: {path}: expected 8-bit RGB(A), non-interlaced")
+            channels = 3 if color == 2 else 4
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + length
+    raw, stride, rows, prev = zlib.decompress(idat), width * channels, [], bytearray(width * channels)
+    for y in range(height):
+        kind, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):  # undo the PNG row filter (RFC 2083 §6)
+            a = line[i - channels] if i >= channels else 0
+            b, c = prev[i], prev[i - channels] if i >= channels else 0
+            if kind == 1:
+                line[i] = (line[i] + a) & 255
+            elif kind == 2:
+                line[i] = (line[i] + b) & 255
+            elif kind == 3:
+                line[i] = (line[i] + (a + b) // 2) & 255
+            elif kind == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(line)
+        prev = line
+    return width, height, channels, rows
+
+
+def pixels(path):
+    w, h, ch, rows = read_png(path)
+    return w, h, [tuple(r[x * ch:x * ch + 3]) for r in rows for x in range(w)]
+
+
+def main():
+    if sys.argv[1] == "organ":
+        w, h, px = pixels(sys.argv[2])
+        background = px[0]
+        colours = len(set(px))
+        covered = sum(1 for p in px if max(abs(a - b) for a, b in zip(p, background)) > 24) / len(px)
+        print(f"{sys.argv[2]}: {w}x{h}, {colours} colours, organ covers {covered:.1%}")
+        if colours < 100 or not 0.05 < covered < 0.95:
+            sys.exit("FAIL: no organ in the picture")
+    elif sys.argv[1] == "differ":
+        wa, ha, a = pixels(sys.argv[2])
+        wb, hb, b = pixels(sys.argv[3])
+        if (wa, ha) != (wb, hb):
+            sys.exit("FAIL: the pictures differ in size")
+        changed = sum(1 for p, q in zip(a, b) if max(abs(x - y) for x, y in zip(p, q)) > 24)
+        print(f"{changed} pixels differ clearly")
+        if changed < 100:
+            sys.exit("FAIL: the poke did not change the picture")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# tissue-viewer under Xvfb: 20 frames of the scripted poke, then a screenshot. The picture must
+# show a lit organ (not one colour, a fair share of non-background pixels) and differ where
+# the poke dents it from a run without the poke. Exit 77 (skip) without xvfb-run.
+set -u
+command -v xvfb-run >/dev/null || { echo "SKIP: xvfb-run not installed"; exit 77; }
+viewer="$1"; dir="$2"; mkdir -p "$dir"
+check="$(dirname "${BASH_SOURCE[0]}")/png_check.py"
+rm -f "$dir/poked.png" "$dir/rest.png"
+run() {  # run OUT.PNG [extra options]
+  local png="$1"; shift
+  xvfb-run -a "$viewer" --width 640 --height 400 --screenshot "$png" "$@" >"$png.log" 2>&1 \
+    || { echo "FAIL: tissue-viewer exited $?:"; cat "$png.log"; exit 1; }
+  cat "$png.log"
+}
+run "$dir/poked.png" --frames 20 --poke-script
+run "$dir/rest.png" --frames 2
+grep -q "scripted poke hits triangle" "$dir/poked.png.log" || { echo "FAIL: the scripted poke missed"; exit 1; }
+python3 "$check" organ "$dir/poked.png" && python3 "$check" organ "$dir/rest.png" &&
+  python3 "$check" differ "$dir/poked.png" "$dir/rest.png"

@@ -1,0 +1,110 @@
+// The viewer's GLFW window and its input callbacks.
+#include "glfw_window.h"
+
+#include <GLFW/glfw3.h>
+
+namespace tissue::viewer {
+namespace {
+
+std::string lastGlfwError() {
+  const char* description = nullptr;
+  glfwGetError(&description);
+  return description ? description : "unknown GLFW error";
+}
+
+Window& windowOf(GLFWwindow* window) {
+  return *static_cast<Window*>(glfwGetWindowUserPointer(window));
+}
+
+}  // namespace
+
+Result<std::unique_ptr<Window>> Window::open(int width, int height, const std::string& title) {
+  // GLFW is initialised once per window: the viewer has exactly one.
+  if (glfwInit() != GLFW_TRUE) return Error{lastGlfwError()};
+  glfwDefaultWindowHints();
+  glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_API);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  GLFWwindow* window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+  if (!window) {
+    const std::string why = "no GL 3.3 core context (" + lastGlfwError() + ")";
+    glfwTerminate();
+    return Error{why};
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(1);
+  std::unique_ptr<Window> result(new Window(window));
+  glfwSetWindowUserPointer(window, result.get());
+  glfwSetMouseButtonCallback(window, &Window::onMouseButton);
+  glfwSetScrollCallback(window, &Window::onScroll);
+  glfwSetKeyCallback(window, &Window::onKey);
+  return result;
+}
+
+Window::Window(GLFWwindow* window) : m_window(window) {
+  glfwGetCursorPos(m_window, &m_lastX, &m_lastY);
+}
+
+Window::~Window() {
+  glfwDestroyWindow(m_window);
+  glfwTerminate();
+}
+
+InputFrame Window::poll() {
+  glfwPollEvents();
+  InputFrame input = m_pending;
+  m_pending = {};
+  glfwGetCursorPos(m_window, &input.cursorX, &input.cursorY);
+  if (m_leftHeld) {
+    input.dragX = input.cursorX - m_lastX;
+    input.dragY = input.cursorY - m_lastY;
+  }
+  m_lastX = input.cursorX;
+  m_lastY = input.cursorY;
+  input.rightHeld = glfwGetMouseButton(m_window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+  input.quit = input.quit || glfwWindowShouldClose(m_window);
+  return input;
+}
+
+void Window::present() {
+  glfwSwapBuffers(m_window);
+}
+
+void Window::setTitle(const std::string& title) {
+  glfwSetWindowTitle(m_window, title.c_str());
+}
+
+void Window::framebufferSize(int& width, int& height) const {
+  glfwGetFramebufferSize(m_window, &width, &height);
+}
+
+void Window::windowSize(int& width, int& height) const {
+  glfwGetWindowSize(m_window, &width, &height);
+}
+
+gl::GetProcAddressFn Window::procAddress() const {
+  return [](const char* name) { return glfwGetProcAddress(name); };
+}
+
+void Window::onMouseButton(GLFWwindow* window, int button, int action, int /*mods*/) {
+  Window& self = windowOf(window);
+  if (button == GLFW_MOUSE_BUTTON_LEFT) self.m_leftHeld = action == GLFW_PRESS;
+  if (button == GLFW_MOUSE_BUTTON_RIGHT && action == GLFW_PRESS) self.m_pending.rightPressed = true;
+  if (button == GLFW_MOUSE_BUTTON_RIGHT && action == GLFW_RELEASE) self.m_pending.rightReleased = true;
+}
+
+void Window::onScroll(GLFWwindow* window, double /*dx*/, double dy) {
+  windowOf(window).m_pending.scrollSteps += dy;
+}
+
+void Window::onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
+  if (action != GLFW_PRESS) return;
+  InputFrame& pending = windowOf(window).m_pending;
+  if (key == GLFW_KEY_ESCAPE) pending.quit = true;
+  if (key == GLFW_KEY_R) pending.reset = true;
+  if (key == GLFW_KEY_N) pending.toggleNormalMap = true;
+}
+
+}  // namespace tissue::viewer
