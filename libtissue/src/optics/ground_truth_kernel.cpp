@@ -13,7 +13,11 @@ double evaluateProfile(const RadialProfileRgb& profile, int channel, double r) {
   const auto& v = profile.value[static_cast<std::size_t>(channel)];
   if (rs.empty() || r > rs.back()) return 0.0;
   if (r <= rs.front()) return v.front();
-  const auto hi = static_cast<std::size_t>(std::upper_bound(rs.begin(), rs.end(), r) - rs.begin());
+  // Uniformly spaced samples (groundTruthProfile's) are found in O(1); others by bisection.
+  const double guess = (r - rs.front()) / (rs.back() - rs.front()) * static_cast<double>(rs.size() - 1);
+  auto hi = static_cast<std::size_t>(guess) + 1;
+  if (hi >= rs.size() || !(rs[hi - 1] <= r && r <= rs[hi]))
+    hi = static_cast<std::size_t>(std::upper_bound(rs.begin(), rs.end(), r) - rs.begin());
   if (hi >= rs.size()) return v.back();
   const double t = (r - rs[hi - 1]) / (rs[hi] - rs[hi - 1]);
   return v[hi - 1] + t * (v[hi] - v[hi - 1]);
@@ -62,19 +66,30 @@ Result<GroundTruthKernel> groundTruthKernel(const RadialProfileRgb& profile, int
   const int n = k.size();
   const int sub = 4;  // 4x4 point samples per cell: the peak at r = 0 is narrow for some materials
   for (int c = 0; c < kChannels; ++c) {
+    // The 4x4 sample pattern is symmetric about the cell centre, so a cell's value depends on
+    // (|dx|, |dy|) only and is symmetric in the two: compute one octant, mirror it.
+    std::vector<double> octant(static_cast<std::size_t>((halfCells + 1) * (halfCells + 1)), 0.0);
+    for (int dy = 0; dy <= halfCells; ++dy) {
+      for (int dx = dy; dx <= halfCells; ++dx) {
+        double cell = 0;
+        for (int sy = 0; sy < sub; ++sy) {
+          for (int sx = 0; sx < sub; ++sx) {
+            const double px = (dx + (sx + 0.5) / sub - 0.5) * k.cellMm;
+            const double py = (dy + (sy + 0.5) / sub - 0.5) * k.cellMm;
+            cell += evaluateProfile(profile, c, std::hypot(px, py));
+          }
+        }
+        octant[static_cast<std::size_t>(dy * (halfCells + 1) + dx)] = cell;
+      }
+    }
     auto& v = k.values[static_cast<std::size_t>(c)];
     v.assign(static_cast<std::size_t>(n * n), 0.0);
     double sum = 0;
     for (int y = 0; y < n; ++y) {
       for (int x = 0; x < n; ++x) {
-        double cell = 0;
-        for (int sy = 0; sy < sub; ++sy) {
-          for (int sx = 0; sx < sub; ++sx) {
-            const double px = (x - halfCells + (sx + 0.5) / sub - 0.5) * k.cellMm;
-            const double py = (y - halfCells + (sy + 0.5) / sub - 0.5) * k.cellMm;
-            cell += evaluateProfile(profile, c, std::hypot(px, py));
-          }
-        }
+        const int ax = std::abs(x - halfCells), ay = std::abs(y - halfCells);
+        const double cell =
+            octant[static_cast<std::size_t>(std::min(ax, ay) * (halfCells + 1) + std::max(ax, ay))];
         v[static_cast<std::size_t>(y * n + x)] = cell;
         sum += cell;
       }

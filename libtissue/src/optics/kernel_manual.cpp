@@ -57,14 +57,16 @@ std::vector<DenseComponent> manualComponents(const GroundTruthKernel& truth, con
     const auto ch = static_cast<std::size_t>(c);
     const double near = std::pow(p.sigmaNearMm[ch] / truth.cellMm, 2.0);  // variances in cells^2
     const double far = std::pow(p.sigmaFarMm[ch] / truth.cellMm, 2.0);
+    // Eq. 5.21 with eq. 4.8's G(x; tau) = e^(-x^2 / (2 tau)) / (2 pi tau): along a line each G
+    // holds 1 / sqrt(2 pi tau), so the near Gaussian's share of the energy is w / sqrt(tau_n)
+    // against (1 - w) / sqrt(tau_f).
+    const double nearShare = p.nearWeight / p.sigmaNearMm[ch];
+    const double farShare = (1.0 - p.nearWeight) / p.sigmaFarMm[ch];
     auto& a = comp.a[ch];
     double sum = 0;
     for (int j = 0; j < n; ++j) {
-      // Eq. 5.21: a_m = w G(tau_n) + (1 - w) G(tau_f), each G normalised on the line, so w is the
-      // near Gaussian's share of the energy.
       const double x = j - truth.halfCells;
-      const double v =
-          p.nearWeight * gaussianCellIntegral(x, near) + (1.0 - p.nearWeight) * gaussianCellIntegral(x, far);
+      const double v = nearShare * gaussianCellIntegral(x, near) + farShare * gaussianCellIntegral(x, far);
       a.push_back(v);
       sum += v;
     }

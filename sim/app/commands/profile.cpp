@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "command.h"
+#include "named_material.h"
 #include "output.h"
 #include "tissue/optics/burley.h"
 #include "tissue/optics/dipole.h"
@@ -40,32 +41,6 @@ struct ChannelProfile {
   std::int64_t photons = 0;  // MC: photons launched
   int threads = 0;           // MC: worker threads used
 };
-
-std::string lowerCase(std::string s) {
-  for (char& c : s)
-    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
-// --material NAME: Jensen's table (shared/reference), then data/materials/*.json by stem, ignoring case.
-Result<optics::ScatteringMaterial> findNamedMaterial(const std::string& name) {
-  const auto table = sharedDir() / "reference" / "jensen2001_materials.tsv";
-  auto jensen = optics::loadJensenMaterials(table);
-  if (!jensen) return jensen.error();
-  if (auto m = optics::findMaterial(*jensen, name)) return m;
-  std::string known;
-  for (const auto& m : *jensen)
-    known += m.name + ", ";
-  std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator(dataDir() / "materials", ec)) {
-    if (entry.path().extension() != ".json") continue;
-    if (lowerCase(entry.path().stem().string()) == lowerCase(name))
-      return optics::loadTissueMaterial(entry.path());
-    known += entry.path().stem().string() + ", ";
-  }
-  return Error{"unknown material '" + name + "'; known: " + known.substr(0, known.size() - 2) +
-               " (or pass --medium FILE.json)"};
-}
 
 // The first layer as the analytic models see it: reduced coefficients, relative index.
 struct AnalyticLayer {

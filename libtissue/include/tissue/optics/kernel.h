@@ -57,7 +57,9 @@ enum class KernelModel {
 struct ManualGaussians {
   std::array<double, kChannels> sigmaNearMm{};  ///< sqrt(tau_n), mm (Table A.1 in cm, x10)
   std::array<double, kChannels> sigmaFarMm{};   ///< sqrt(tau_f), mm
-  double nearWeight = 0.5;                      ///< w in [0, 1]: the near Gaussian's share
+  /// w in [0, 1] of eq. 5.21 with eq. 4.8's 2D-normalised G, so the near Gaussian's share of
+  /// the energy is (w / sigma_n) / (w / sigma_n + (1 - w) / sigma_f)
+  double nearWeight = 0.5;
 };
 
 /// Parameters of Jimenez's reference kernel (separable_sss_kernel.md).
