@@ -11,6 +11,7 @@
 #include "output.h"
 #include "tissue/core/atomic_file.h"
 #include "tissue/core/stopwatch.h"
+#include "tissue/inspect/chart.h"
 #include "tissue/sim/stability_study.h"
 
 namespace tissue::sim_app {
@@ -100,7 +101,17 @@ Result<void> writeOutputs(const std::filesystem::path& dir, const std::string& t
   for (std::size_t k = 0; k < d.labels.size(); ++k)
     for (std::size_t p = 0; p < d.x[k].size(); ++p)
       csv << '"' << d.labels[k] << "\"," << d.x[k][p] << ',' << d.y[k][p] << "\n";
-  return writeTextFileAtomic(dir / "stability_chart.csv", csv.str());
+  if (auto ok = writeTextFileAtomic(dir / "stability_chart.csv", csv.str()); !ok) return ok;
+  std::vector<inspect::ChartSeries> series;
+  for (std::size_t k = 0; k < d.labels.size(); ++k)
+    series.push_back({d.labels[k], d.x[k], d.y[k], true});
+  return inspect::writeLineChart(dir / "stability.png",
+                                 {.title = "Largest stable time step, one mass on one spring",
+                                  .xLabel = "stiffness k (N/mm)",
+                                  .yLabel = "max stable dt / 2 sqrt(m/k)",
+                                  .logX = true,
+                                  .logY = true},
+                                 series);
 }
 
 nlohmann::json toJson(const std::vector<sim::StabilityCase>& cases, double ms) {
