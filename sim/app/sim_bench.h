@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tissue/core/result.h"
+#include "tissue/sim/system.h"
 
 namespace tissue::sim_app {
 
@@ -18,7 +19,12 @@ struct FramePathOptions {
   int threads = 2;             ///< threads of the simulator and the mesh update
 };
 
-/// One frame's simulation step (implicit Euler and fast-mass-spring), incremental plane re-fit
+/// A bound on the largest natural angular frequency (rad/s) of `system` at rest, by
+/// Gershgorin on M^-1/2 K M^-1/2: omega^2 <= max_i sum over i's springs k (1/m_i + 1/sqrt(m_i m_j)).
+double omegaBound(const sim::MassSpringSystem& system);
+
+/// One frame's simulation (symplectic Euler substepped below 2/omega_max, implicit Euler,
+/// fast-mass-spring) (implicit Euler and fast-mass-spring), incremental plane re-fit
 /// and tangent rebuild on `options.mesh`, mean ms per phase, as a JSON object.
 Result<nlohmann::json> measureFramePath(const FramePathOptions& options);
 

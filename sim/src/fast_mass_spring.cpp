@@ -245,6 +245,28 @@ bool startFromPrediction(const MassSpringSystem& system, const State& state, dou
   return atPrediction <= atStart;
 }
 
+/// Global step (§4.1): A D = h M v + h^2 f_ext + h^2 (J d - L x0) - A_fp D_p, x = x0 + D on the
+/// free vertices.
+void globalStep(const MassSpringSystem& system, double h, FastSolverCache::Impl& c, std::span<Vec3d> x) {
+  const double h2 = h * h;
+  const std::size_t rows = c.freeVertices.size();
+  detail::parallelRanges(rows, system.config.threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t r = begin; r < end; ++r) {
+      const std::uint32_t v = c.freeVertices[r];
+      const Vec3d b = c.base[v] + h2 * c.perVertex[v];
+      c.rhs.row(static_cast<Eigen::Index>(r)) << b.x, b.y, b.z;
+    }
+  });
+  solveThreeColumns(c);
+  detail::parallelRanges(rows, system.config.threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t r = begin; r < end; ++r) {
+      const auto i = static_cast<Eigen::Index>(r);
+      x[c.freeVertices[r]] =
+          c.x0[c.freeVertices[r]] + Vec3d{c.solution(i, 0), c.solution(i, 1), c.solution(i, 2)};
+    }
+  });
+}
+
 }  // namespace
 
 StepStats stepFastMassSpring(const MassSpringSystem& system, State& state, double h, StepWorkspace& ws,
@@ -278,31 +300,13 @@ StepStats stepFastMassSpring(const MassSpringSystem& system, State& state, doubl
   });
   constantRightHandSide(system, state, h, c);
 
-  const double h2 = h * h;
-  const auto rows = static_cast<std::size_t>(c.rhs.rows());
   for (int it = 0; it < std::max(1, solver.localGlobalIterations); ++it) {
     localStep(system, state.x, c);
-    // Global step: A D = h M v + h^2 f_ext + h^2 (J d - L x0) - A_fp D_p.
-    detail::parallelRanges(rows, config.threads, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t r = begin; r < end; ++r) {
-        const std::uint32_t v = c.freeVertices[r];
-        const Vec3d b = c.base[v] + h2 * c.perVertex[v];
-        c.rhs(static_cast<Eigen::Index>(r), 0) = b.x;
-        c.rhs(static_cast<Eigen::Index>(r), 1) = b.y;
-        c.rhs(static_cast<Eigen::Index>(r), 2) = b.z;
-      }
-    });
-    solveThreeColumns(c);
-    detail::parallelRanges(rows, config.threads, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t r = begin; r < end; ++r) {
-        const auto i = static_cast<Eigen::Index>(r);
-        state.x[c.freeVertices[r]] =
-            c.x0[c.freeVertices[r]] + Vec3d{c.solution(i, 0), c.solution(i, 1), c.solution(i, 2)};
-      }
-    });
+    globalStep(system, h, c, state.x);
     stats.localGlobalIterations = it + 1;
   }
 
+  const auto rows = c.freeVertices.size();
   // v(t+h) = (x(t+h) - x(t)) / h; pinned vertices keep their velocity.
   const double invH = 1.0 / h;
   detail::parallelRanges(rows, config.threads, [&](std::size_t begin, std::size_t end) {

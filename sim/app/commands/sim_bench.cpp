@@ -63,8 +63,8 @@ Result<BenchPatch> makePatch(std::size_t targetSprings, int threads) {
   return BenchPatch{std::move(*system), sim::restState(positions)};
 }
 
-/// A bound on the largest natural frequency (rad/s) at rest, by Gershgorin on M^-1/2 K M^-1/2:
-/// omega^2 <= max_i sum over i's springs k (1/m_i + 1/sqrt(m_i m_j)).
+}  // namespace
+
 double omegaBound(const sim::MassSpringSystem& system) {
   const sim::SpringNetwork& s = system.springs;
   std::vector<double> row(system.vertexCount(), 0.0);
@@ -75,6 +75,8 @@ double omegaBound(const sim::MassSpringSystem& system) {
   }
   return std::sqrt(*std::max_element(row.begin(), row.end()));
 }
+
+namespace {
 
 /// The median and the smallest of `times` (ms).
 std::pair<double, double> medianAndMin(std::vector<double> times) {
