@@ -2,33 +2,30 @@
 
 #include <algorithm>
 
+#include "gather.h"
 #include "parallel.h"
 
 namespace tissue::sim {
-namespace {
+namespace detail {
 
-/// out_v = sum over v's springs of +perSpring (v is end i) or -perSpring (v is end j), in the
-/// fixed order of the incidence lists: the same sums, bit for bit, however the passes are split.
 void gatherPerVertex(const MassSpringSystem& system, std::span<const Vec3d> perSpring, std::span<Vec3d> out) {
   const SpringNetwork& springs = system.springs;
-  detail::parallelRanges(springs.vertexCount(), system.config.threads,
-                         [&](std::size_t begin, std::size_t end) {
-                           for (std::size_t v = begin; v < end; ++v) {
-                             Vec3d sum{};
-                             for (std::uint32_t k = springs.vertexSpringOffsets[v];
-                                  k < springs.vertexSpringOffsets[v + 1]; ++k) {
-                               const std::uint32_t e = springs.vertexSprings[k];
-                               if (springs.i[e] == v)
-                                 sum += perSpring[e];
-                               else
-                                 sum -= perSpring[e];
-                             }
-                             out[v] = sum;
-                           }
-                         });
+  parallelRanges(springs.vertexCount(), system.config.threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v) {
+      Vec3d sum{};
+      for (std::uint32_t k = springs.vertexSpringOffsets[v]; k < springs.vertexSpringOffsets[v + 1]; ++k) {
+        const std::uint32_t e = springs.vertexSprings[k];
+        if (springs.i[e] == v)
+          sum += perSpring[e];
+        else
+          sum -= perSpring[e];
+      }
+      out[v] = sum;
+    }
+  });
 }
 
-}  // namespace
+}  // namespace detail
 
 void springMatrixTimes(const MassSpringSystem& system, std::span<const Vec3d> x, std::span<const Vec3d> p,
                        double stiffnessWeight, double dampingWeight, std::span<Vec3d> out,
@@ -52,7 +49,7 @@ void springMatrixTimes(const MassSpringSystem& system, std::span<const Vec3d> x,
       scratch.perSpring[e] = q;
     }
   });
-  gatherPerVertex(system, scratch.perSpring, out);
+  detail::gatherPerVertex(system, scratch.perSpring, out);
 }
 
 void computeForces(const MassSpringSystem& system, std::span<const Vec3d> x, std::span<const Vec3d> v,
@@ -67,18 +64,22 @@ void computeForces(const MassSpringSystem& system, std::span<const Vec3d> x, std
       scratch.perSpring[e] = springForce(x[s.i[e]], x[s.j[e]], v[s.i[e]], v[s.j[e]], s.restLength[e],
                                          s.stiffness[e], s.damping[e]);
   });
-  gatherPerVertex(system, scratch.perSpring, forces);
+  detail::gatherPerVertex(system, scratch.perSpring, forces);
 
   // Gravity and Rayleigh mass damping: m (g - alpha v).
-  for (std::size_t k = 0; k < forces.size(); ++k)
-    forces[k] += system.masses[k] * (c.gravity - c.rayleighMass * v[k]);
+  detail::parallelRanges(forces.size(), c.threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+      forces[k] += system.masses[k] * (c.gravity - c.rayleighMass * v[k]);
+  });
 
   // Rayleigh stiffness damping: -beta K v.
   if (c.rayleighStiffness != 0.0) {
     scratch.perVertex.resize(forces.size());
     springMatrixTimes(system, x, v, c.rayleighStiffness, 0.0, scratch.perVertex, scratch);
-    for (std::size_t k = 0; k < forces.size(); ++k)
-      forces[k] -= scratch.perVertex[k];
+    detail::parallelRanges(forces.size(), c.threads, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k)
+        forces[k] -= scratch.perVertex[k];
+    });
   }
 }
 

@@ -1,17 +1,21 @@
-// The explicit integrators and the dispatch; implicit Euler is in implicit_euler.cpp.
+// The explicit integrators and the dispatch; implicit Euler is in implicit_euler.cpp, the fast
+// mass-spring solver in fast_mass_spring.cpp.
 #include "tissue/sim/integrators.h"
 
 #include <array>
 #include <utility>
 
+#include "parallel.h"
+
 namespace tissue::sim {
 namespace {
 
-constexpr std::array<std::pair<Integrator, std::string_view>, 4> kNames{{
+constexpr std::array<std::pair<Integrator, std::string_view>, 5> kNames{{
     {Integrator::ExplicitEuler, "explicit-euler"},
     {Integrator::SymplecticEuler, "symplectic-euler"},
     {Integrator::VelocityVerlet, "verlet"},
     {Integrator::ImplicitEuler, "implicit-euler"},
+    {Integrator::FastMassSpring, "fast-mass-spring"},
 }};
 
 /// ws.forces = f(x, v) for the state's sizes.
@@ -35,32 +39,43 @@ std::optional<Integrator> parseIntegrator(std::string_view name) {
   return std::nullopt;
 }
 
+// The vector updates run over contiguous vertex ranges on config.threads threads; each vertex is
+// written by one thread, so the results do not depend on the thread count.
+
 void stepExplicitEuler(const MassSpringSystem& system, State& state, double h, StepWorkspace& ws) {
   evaluateForces(system, state.x, state.v, ws);
-  for (std::size_t k = 0; k < state.x.size(); ++k) {
-    state.x[k] += h * state.v[k];
-    state.v[k] += (h * system.invMasses[k]) * ws.forces[k];
-  }
+  detail::parallelRanges(state.x.size(), system.config.threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      state.x[k] += h * state.v[k];
+      state.v[k] += (h * system.invMasses[k]) * ws.forces[k];
+    }
+  });
 }
 
 void stepSymplecticEuler(const MassSpringSystem& system, State& state, double h, StepWorkspace& ws) {
   evaluateForces(system, state.x, state.v, ws);
-  for (std::size_t k = 0; k < state.x.size(); ++k) {
-    state.v[k] += (h * system.invMasses[k]) * ws.forces[k];
-    state.x[k] += h * state.v[k];
-  }
+  detail::parallelRanges(state.x.size(), system.config.threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      state.v[k] += (h * system.invMasses[k]) * ws.forces[k];
+      state.x[k] += h * state.v[k];
+    }
+  });
 }
 
 void stepVelocityVerlet(const MassSpringSystem& system, State& state, double h, StepWorkspace& ws) {
   // Half kick with a(t), drift, half kick with a(t+h) (velocity damping sees the half-step v).
   evaluateForces(system, state.x, state.v, ws);
-  for (std::size_t k = 0; k < state.x.size(); ++k) {
-    state.v[k] += (0.5 * h * system.invMasses[k]) * ws.forces[k];
-    state.x[k] += h * state.v[k];
-  }
+  detail::parallelRanges(state.x.size(), system.config.threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      state.v[k] += (0.5 * h * system.invMasses[k]) * ws.forces[k];
+      state.x[k] += h * state.v[k];
+    }
+  });
   evaluateForces(system, state.x, state.v, ws);
-  for (std::size_t k = 0; k < state.x.size(); ++k)
-    state.v[k] += (0.5 * h * system.invMasses[k]) * ws.forces[k];
+  detail::parallelRanges(state.x.size(), system.config.threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+      state.v[k] += (0.5 * h * system.invMasses[k]) * ws.forces[k];
+  });
 }
 
 StepStats step(Integrator integrator, const MassSpringSystem& system, State& state, double h,
@@ -77,6 +92,8 @@ StepStats step(Integrator integrator, const MassSpringSystem& system, State& sta
       return {};
     case Integrator::ImplicitEuler:
       return stepImplicitEuler(system, state, h, ws, solver);
+    case Integrator::FastMassSpring:
+      return stepFastMassSpring(system, state, h, ws, solver);
   }
   return {};
 }

@@ -24,7 +24,8 @@ Integrator moreStable(Integrator integrator) {
     case Integrator::VelocityVerlet:
       return Integrator::ImplicitEuler;
     case Integrator::ImplicitEuler:
-      return Integrator::ImplicitEuler;
+    case Integrator::FastMassSpring:  // unconditionally stable, like implicit Euler: the end of the chain
+      return integrator;
   }
   return integrator;
 }

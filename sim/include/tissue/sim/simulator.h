@@ -26,7 +26,9 @@ struct DivergenceLimits {
 /// How a diverged frame is recovered.
 struct RecoveryConfig {
   int maxSubsteps = 64;          ///< substeps are doubled up to this before switching integrator
-  bool switchIntegrator = true;  ///< then explicit -> symplectic -> implicit Euler, Verlet -> implicit
+  bool switchIntegrator = true;  ///< then explicit -> symplectic -> implicit Euler, Verlet -> implicit;
+                                 ///< implicit Euler and fast-mass-spring (both unconditionally
+                                 ///< stable) end the chain
 };
 
 /// Simulator settings.

@@ -3,7 +3,7 @@
 /// The stability study: for one mass on one spring (the other end pinned), the largest time
 /// step at which each integrator stays stable, found by bisection, against the theory
 /// (symplectic Euler and Verlet: h < 2/omega = 2 sqrt(m/k); explicit Euler undamped: unstable at
-/// every h; implicit Euler: unconditionally stable).
+/// every h; implicit Euler and the fast mass-spring solver: unconditionally stable).
 
 #include <optional>
 #include <vector>
@@ -30,7 +30,8 @@ struct StabilityCase {
 /// The study's grid and search.
 struct StabilityStudyConfig {
   std::vector<Integrator> integrators{Integrator::ExplicitEuler, Integrator::SymplecticEuler,
-                                      Integrator::VelocityVerlet, Integrator::ImplicitEuler};
+                                      Integrator::VelocityVerlet, Integrator::ImplicitEuler,
+                                      Integrator::FastMassSpring};
   std::vector<double> masses{0.1, 1.0, 10.0};       ///< g
   std::vector<double> stiffnesses{0.01, 0.1, 1.0};  ///< N/mm
   double maxFactor = 100.0;                         ///< largest h tested, times the reference
