@@ -1,4 +1,5 @@
-// tissue-sim mesh-info FILE: what a mesh file holds, after validation.
+// tissue-sim mesh-info FILE: what a mesh file holds, after validation: a surface (OBJ, PLY, OFF,
+// STL) or a tetrahedral volume (.vtk, .vtu, .msh).
 #include <algorithm>
 #include <iostream>
 #include <limits>
@@ -6,8 +7,44 @@
 #include "command.h"
 #include "output.h"
 #include "tissue/mesh/load_mesh.h"
+#include "tissue/volume/tet_mesh.h"
 
 namespace tissue::sim_app {
+namespace {
+
+/// Describes a tetrahedral volume mesh: vertices, tets, total volume (mm^3), bounding box (mm).
+int describeVolume(const GlobalOptions& global, const std::string& file, float scale) {
+  volume::TetLoadReport report;
+  auto mesh = volume::loadTetMesh(file, {.scaleToMm = scale}, &report);
+  if (!mesh) return fail("mesh-info", mesh.error().message);
+  Float3 lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
+            std::numeric_limits<float>::max()};
+  Float3 hi{-lo.x, -lo.y, -lo.z};
+  for (const auto& p : mesh->positions) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  nlohmann::json out;
+  out["file"] = file;
+  out["kind"] = "tetrahedral volume";
+  out["vertices"] = mesh->positions.size();
+  out["tets"] = mesh->tets.size();
+  out["volume_mm3"] = volume::totalVolume(*mesh);
+  out["boundary_triangles"] = volume::boundaryTriangles(*mesh).size();
+  out["bbox_min"] = {lo.x, lo.y, lo.z};
+  out["bbox_max"] = {hi.x, hi.y, hi.z};
+  out["units"] = "mm";
+  out["ignored_cells"] = report.ignoredCells;
+  out["reoriented_tets"] = report.reorientedTets;
+  out["unreferenced_vertices"] = report.unreferencedVertices;
+  out["warnings"] = report.warnings;
+  for (const auto& w : report.warnings)
+    std::cerr << "tissue-sim mesh-info: warning: " << w << "\n";
+  printResult(global, out);
+  return 0;
+}
+
+}  // namespace
 
 void registerMeshInfoCommand(CLI::App& app, const GlobalOptions& global, int& exitCode) {
   struct Options {
@@ -16,13 +53,18 @@ void registerMeshInfoCommand(CLI::App& app, const GlobalOptions& global, int& ex
     bool strict = false;
   };
   auto opts = std::make_shared<Options>();
-  auto* cmd =
-      app.add_subcommand("mesh-info", "load and validate a mesh (OBJ, PLY, OFF, STL) and describe it");
+  auto* cmd = app.add_subcommand(
+      "mesh-info",
+      "load and validate a mesh (OBJ, PLY, OFF, STL, or a tet volume: .vtk, .vtu, .msh) and describe it");
   cmd->add_option("file", opts->file, "mesh file")->required();
   cmd->add_option("--scale", opts->scale, "mm per file unit (default 1)");
   cmd->add_flag("--strict", opts->strict,
                 "zero-area faces and line elements are errors instead of being dropped");
   cmd->callback([opts, &global, &exitCode] {
+    if (volume::isTetMeshPath(opts->file)) {
+      exitCode = describeVolume(global, opts->file, opts->scale);
+      return;
+    }
     mesh::LoadReport report;
     auto mesh = mesh::loadMesh(
         opts->file, {.requireUvs = false, .scaleToMm = opts->scale, .strict = opts->strict}, &report);

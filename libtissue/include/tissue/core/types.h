@@ -36,6 +36,10 @@ struct Float4 {
 /// A triangle as three vertex indices, counter-clockwise seen from outside.
 using Triangle = std::array<std::uint32_t, 3>;
 
+/// A tetrahedron as four vertex indices, positively oriented: (v1-v0, v2-v0, v3-v0) is a
+/// right-handed frame, so its signed volume is positive.
+using Tet = std::array<std::uint32_t, 4>;
+
 static_assert(sizeof(Float2) == 8 && sizeof(Float3) == 12 && sizeof(Float4) == 16,
               "the plain vector types must be tightly packed for upload");
 

@@ -1,0 +1,130 @@
+// loadTetMesh: picks the reader by extension, then validates what it read.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
+
+#include "raw_volume.h"
+#include "tissue/volume/tet_mesh.h"
+
+namespace tissue::volume {
+namespace {
+
+std::string lowerExtension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+/// Longest edge of a tet (mm), the scale of the degeneracy test.
+double longestEdge(std::span<const Float3> p, const Tet& t) {
+  double longest = 0.0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b) {
+      const Float3& u = p[t[static_cast<std::size_t>(a)]];
+      const Float3& w = p[t[static_cast<std::size_t>(b)]];
+      const double dx = double{u.x} - double{w.x}, dy = double{u.y} - double{w.y},
+                   dz = double{u.z} - double{w.z};
+      longest = std::max(longest, std::sqrt(dx * dx + dy * dy + dz * dz));
+    }
+  return longest;
+}
+
+/// Checks and converts one tet; re-orients an inverted one. `where` names the file.
+Result<Tet> checkTet(const detail::RawTet& raw, std::span<const Float3> positions, const std::string& where,
+                     bool& reoriented) {
+  const std::string element = where + ": tet element " + std::to_string(raw.element);
+  Tet t{};
+  for (std::size_t k = 0; k < 4; ++k) {
+    if (raw.v[k] < 0 || static_cast<std::size_t>(raw.v[k]) >= positions.size())
+      return Error{element + " refers to vertex " + std::to_string(raw.v[k] + 1) +
+                   " (1-based), but there are " + std::to_string(positions.size()) +
+                   " vertices; fix the connectivity"};
+    t[k] = static_cast<std::uint32_t>(raw.v[k]);
+  }
+  for (std::size_t a = 0; a < 4; ++a)
+    for (std::size_t b = a + 1; b < 4; ++b)
+      if (t[a] == t[b])
+        return Error{element + " repeats vertex " + std::to_string(t[a] + 1) +
+                     " (1-based); a tet needs four distinct vertices"};
+  // Degenerate: |6 V| tiny against the cube of the longest edge (a flat or collapsed tet).
+  const double v = signedTetVolume(positions, t);
+  const double l = longestEdge(positions, t);
+  if (!(std::abs(6.0 * v) > 1e-9 * l * l * l))
+    return Error{element + " has zero volume (its four vertices are coplanar); remove or re-mesh it"};
+  reoriented = v < 0.0;
+  if (reoriented) std::swap(t[2], t[3]);
+  return t;
+}
+
+/// Validates `raw` into a TetMesh; the error names `where` and the element, 1-based.
+Result<TetMesh> validate(const detail::RawVolume& raw, const std::string& where, float scale,
+                         TetLoadReport& report) {
+  TetMesh mesh;
+  mesh.positions.reserve(raw.points.size());
+  for (std::size_t p = 0; p < raw.points.size(); ++p) {
+    const auto& q = raw.points[p];
+    const double s = scale;
+    const Float3 f{float(q[0] * s), float(q[1] * s), float(q[2] * s)};
+    if (!std::isfinite(f.x) || !std::isfinite(f.y) || !std::isfinite(f.z))
+      return Error{where + ": vertex " + std::to_string(p + 1) +
+                   " has a coordinate that is not finite (NaN or Inf); fix the file"};
+    mesh.positions.push_back(f);
+  }
+  report.ignoredCells = raw.ignoredCells;
+  if (raw.tets.empty())
+    return Error{where + ": no tetrahedra (found " + std::to_string(raw.ignoredCells) +
+                 " other cells); give a tetrahedral volume mesh"};
+  std::vector<char> used(mesh.positions.size(), 0);
+  mesh.tets.reserve(raw.tets.size());
+  for (const auto& rt : raw.tets) {
+    bool reoriented = false;
+    auto t = checkTet(rt, mesh.positions, where, reoriented);
+    if (!t) return t.error();
+    report.reorientedTets += reoriented ? 1 : 0;
+    for (std::uint32_t v : *t)
+      used[v] = 1;
+    mesh.tets.push_back(*t);
+  }
+  report.unreferencedVertices = static_cast<std::size_t>(std::count(used.begin(), used.end(), 0));
+  if (report.ignoredCells > 0)
+    report.warnings.push_back(where + ": ignored " + std::to_string(report.ignoredCells) +
+                              " cells that are not 4-node tets");
+  if (report.reorientedTets > 0)
+    report.warnings.push_back(where + ": re-oriented " + std::to_string(report.reorientedTets) +
+                              " inverted tets");
+  if (report.unreferencedVertices > 0)
+    report.warnings.push_back(where + ": " + std::to_string(report.unreferencedVertices) +
+                              " vertices belong to no tet");
+  return mesh;
+}
+
+}  // namespace
+
+bool isTetMeshPath(const std::filesystem::path& path) {
+  const std::string ext = lowerExtension(path);
+  return ext == ".vtk" || ext == ".vtu" || ext == ".msh";
+}
+
+Result<TetMesh> loadTetMesh(const std::filesystem::path& path, const TetLoadOptions& options,
+                            TetLoadReport* report) {
+  if (!(options.scaleToMm > 0.0f) || !std::isfinite(options.scaleToMm))
+    return Error{path.string() + ": the scale must be a positive number of mm per file unit"};
+  const std::string ext = lowerExtension(path);
+  Result<detail::RawVolume> raw = Error{""};
+  if (ext == ".vtk")
+    raw = detail::readLegacyVtk(path);
+  else if (ext == ".vtu")
+    raw = detail::readVtu(path);
+  else if (ext == ".msh")
+    raw = detail::readGmsh(path);
+  else
+    return Error{path.string() + ": unknown volume mesh extension '" + ext + "'; use .vtk, .vtu or .msh"};
+  if (!raw) return raw.error();
+  TetLoadReport local;
+  auto mesh = validate(*raw, path.string(), options.scaleToMm, local);
+  if (mesh && report) *report = std::move(local);
+  return mesh;
+}
+
+}  // namespace tissue::volume

@@ -1,0 +1,34 @@
+#pragma once
+// What a volume reader hands to validation: the file's points and its 4-node tets as written,
+// before any check. Private to the volume module.
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "tissue/core/result.h"
+
+namespace tissue::volume::detail {
+
+/// One tet as the file writes it.
+struct RawTet {
+  std::array<std::int64_t, 4> v{};  ///< 0-based vertex indices, unchecked
+  std::size_t element = 0;          ///< 1-based position of the cell in the file's cell list
+};
+
+/// The file's content, unchecked.
+struct RawVolume {
+  std::vector<std::array<double, 3>> points;  ///< file units
+  std::vector<RawTet> tets;
+  std::size_t ignoredCells = 0;  ///< cells that are not 4-node tets
+};
+
+/// Legacy VTK unstructured grid (.vtk) through vtkUnstructuredGridReader.
+Result<RawVolume> readLegacyVtk(const std::filesystem::path& path);
+/// VTK XML unstructured grid (.vtu) through vtkXMLUnstructuredGridReader.
+Result<RawVolume> readVtu(const std::filesystem::path& path);
+/// Gmsh .msh, ASCII v1 ($NOD/$ELM), v2 and v4.1 ($Nodes/$Elements).
+Result<RawVolume> readGmsh(const std::filesystem::path& path);
+
+}  // namespace tissue::volume::detail

@@ -1,0 +1,90 @@
+// Bad volume files give one Error that names the file and the element (1-based).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "test_files.h"
+#include "tissue/volume/tet_mesh.h"
+
+namespace tissue::volume {
+namespace {
+
+using test::writeTestFile;
+
+/// A legacy VTK grid of the five points of kTwoTetPoints and the given cells (each "n i j ...")
+/// with VTK types `types`.
+std::string legacyVtk(const std::string& cells, int cellCount, int size, const std::string& types) {
+  return "# vtk DataFile Version 3.0\ntest\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n" +
+         std::string(test::kTwoTetPoints) + "CELLS " + std::to_string(cellCount) + " " +
+         std::to_string(size) + "\n" + cells + "CELL_TYPES " + std::to_string(cellCount) + "\n" + types;
+}
+
+/// Loads `name` (written with `text`) and expects an error containing `file name` and `what`.
+void expectError(const std::string& name, const std::string& text, const std::string& what) {
+  const auto path = writeTestFile(name, text);
+  auto mesh = loadTetMesh(path);
+  ASSERT_FALSE(mesh.ok()) << name << " loaded";
+  EXPECT_NE(mesh.error().message.find(name), std::string::npos) << mesh.error().message;
+  EXPECT_NE(mesh.error().message.find(what), std::string::npos) << mesh.error().message;
+}
+
+TEST(VolumeBadInput, GoodLegacyVtkWithATriangleLoads) {
+  TetLoadReport report;
+  auto mesh = loadTetMesh(
+      writeTestFile("good.vtk", legacyVtk("3 0 1 2\n4 0 1 2 3\n4 1 3 2 4\n", 3, 14, "5\n10\n10\n")), {},
+      &report);
+  ASSERT_TRUE(mesh.ok()) << mesh.error().message;
+  EXPECT_EQ(mesh->tets.size(), 2u);
+  EXPECT_EQ(report.ignoredCells, 1u);
+  EXPECT_EQ(report.reorientedTets, 1u);  // (1,3,2,4) is inverted as written
+}
+
+TEST(VolumeBadInput, IndexOutOfRangeNamesTheElement) {
+  expectError("range.vtk", legacyVtk("3 0 1 2\n4 0 1 2 7\n", 2, 9, "5\n10\n"),
+              "tet element 2 refers to vertex 8 (1-based), but there are 5 vertices");
+}
+
+TEST(VolumeBadInput, RepeatedVertexNamesTheElement) {
+  expectError("repeat.vtk", legacyVtk("4 0 1 2 3\n4 1 2 2 4\n", 2, 10, "10\n10\n"),
+              "tet element 2 repeats vertex 3");
+}
+
+TEST(VolumeBadInput, ZeroVolumeTetNamesTheElement) {
+  // Four points in the plane z = 0.
+  const std::string text =
+      "# vtk DataFile Version 3.0\nflat\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n"
+      "0 0 0\n1 0 0\n0 1 0\n1 1 0\nCELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n";
+  expectError("flat.vtk", text, "tet element 1 has zero volume");
+}
+
+TEST(VolumeBadInput, NoTetsIsAnError) {
+  expectError("notets.vtk", legacyVtk("3 0 1 2\n3 1 2 3\n", 2, 8, "5\n5\n"),
+              "no tetrahedra (found 2 other cells)");
+}
+
+TEST(VolumeBadInput, NonFiniteCoordinateNamesTheVertex) {
+  expectError("nan.msh",
+              "$NOD\n4\n1 0 0 0\n2 1 0 0\n3 0 nan 0\n4 0 0 1\n$ENDNOD\n$ELM\n1\n1 4 1 1 4 1 2 3 4\n$ENDELM\n",
+              "vertex 3 has a coordinate that is not finite");
+}
+
+TEST(VolumeBadInput, NotAnUnstructuredGridIsAnError) {
+  const auto path = writeTestFile("poly.vtk",
+                                  "# vtk DataFile Version 3.0\np\nASCII\nDATASET POLYDATA\nPOINTS 3 double\n"
+                                  "0 0 0\n1 0 0\n0 1 0\nPOLYGONS 1 4\n3 0 1 2\n");
+  auto mesh = loadTetMesh(path);
+  ASSERT_FALSE(mesh.ok());
+  EXPECT_NE(mesh.error().message.find("poly.vtk"), std::string::npos) << mesh.error().message;
+}
+
+TEST(VolumeBadInput, MissingFileAndUnknownExtension) {
+  auto missing = loadTetMesh(std::filesystem::path(TISSUE_TEST_OUTPUT_DIR) / "volume" / "absent.vtu");
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.error().message.find("absent.vtu"), std::string::npos);
+  auto unknown = loadTetMesh("organ.stl");
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_NE(unknown.error().message.find(".vtk, .vtu or .msh"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tissue::volume
