@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <memory>
+#include <optional>
 #include <sstream>
 
-#include "deformations.h"
 #include "demo_render.h"
 #include "material_file.h"
 #include "output.h"
@@ -14,7 +15,7 @@
 #include "tissue/inspect/vtk_export.h"
 #include "tissue/mesh/deformable_surface.h"
 #include "tissue/mesh/load_mesh.h"
-#include "tissue/mesh/vertex_normals.h"
+#include "tissue/scenario/scenario_run.h"
 
 namespace tissue::sim_app {
 namespace {
@@ -27,15 +28,32 @@ struct PhaseTimer {
   double meanMs() const { return count ? totalMs / count : 0.0; }
 };
 
+/// The contact force summary, and the force every 50 frames.
+void instrumentMarkdown(const nlohmann::json& i, std::ostringstream& md) {
+  md << "## Instrument\n\n"
+     << "- frames: " << i["frames"] << ", frames with NaN: " << i["nan_frames"]
+     << ", divergence events: " << i["divergence_events"] << "\n"
+     << "- contact force on the tool: max " << i["max_contact_force_N"] << " N, mean "
+     << i["mean_contact_force_N"] << " N (every frame in report.json and frames.csv)\n"
+     << "- deepest poke at frame " << i["poked_frame"] << ", strongest lift at frame " << i["lifted_frame"]
+     << "\n\n"
+     << "| frame | F_x (N) | F_y (N) | F_z (N) |\n|---|---|---|---|\n";
+  const auto& forces = i["contact_force_N_per_frame"];
+  for (std::size_t f = 0; f < forces.size(); f += 50)
+    md << "| " << f << " | " << forces[f][0] << " | " << forces[f][1] << " | " << forces[f][2] << " |\n";
+}
+
 std::string markdownReport(const nlohmann::json& r) {
   std::ostringstream md;
   md << "# tissue demo report\n\n"
      << "Mesh `" << r["mesh"].get<std::string>() << "`: " << r["vertices"] << " vertices, " << r["triangles"]
      << " triangles, material `" << r["material"].get<std::string>() << "` (sigma_t " << r["sigma_t_per_mm"]
      << " mm^-1, plane radius " << r["plane_radius_mm"] << " mm).\n\n"
-     << "The instrument pokes " << r["poke"]["moved_fraction"] << " of the vertices, "
-     << r["poke"]["depth_mm"] << " mm deep, over " << r["frames"]
-     << " frames.\n\n## Per-frame phases (mean ms)\n\n| phase | ms |\n|---|---|\n";
+     << "Scenario `" << r["scenario"].get<std::string>() << "` (" << r["springs"]
+     << " springs): a sphere pokes, grasps, lifts and releases the organ over " << r["frames"]
+     << " frames.\n\n";
+  instrumentMarkdown(r["instrument"], md);
+  md << "\n## Per-frame phases (mean ms)\n\n| phase | ms |\n|---|---|\n";
   for (const auto& [name, ms] : r["phases_ms"].items())
     md << "| " << name << " | " << ms << " |\n";
   md << "\n## Incremental plane re-fit\n\n"
@@ -76,83 +94,166 @@ Result<void> writeInspection(const mesh::DeformableSurface& surface, const std::
                             {"displacement_mm", 1, displacement}});
 }
 
+/// The organ to shade, its material, and the scenario that moves it.
+struct DemoSetup {
+  std::filesystem::path meshPath;
+  LayeredMaterial material;
+  mesh::PlaneFitSettings planeSettings;
+  std::optional<mesh::DeformableSurface> surface;
+  std::unique_ptr<scenario::ScenarioRun> run;
+};
+
+Result<DemoSetup> setUp(const DemoOptions& o) {
+  const auto scenarioPath = o.scenarioFile.empty() ? dataDir() / "scenarios" / "liver_poke_grasp.json"
+                                                   : std::filesystem::path(o.scenarioFile);
+  auto parsed = scenario::loadScenario(scenarioPath, {.sharedMeshesDir = sharedDir() / "meshes"});
+  if (!parsed) return parsed.error();
+  if (!o.meshFile.empty()) parsed->mesh = o.meshFile;
+  if (o.frames < 0) return Error{"--frames must be at least 1 (0: the scenario's)"};
+  if (o.frames > 0) parsed->frames = o.frames;
+  DemoSetup d;
+  d.meshPath = parsed->mesh;
+  auto loaded = mesh::loadMesh(d.meshPath, {.requireUvs = true, .scaleToMm = float(parsed->meshScaleToMm)});
+  if (!loaded) return loaded.error();
+  auto material = readLayeredMaterial(materialFileFor(d.meshPath));
+  if (!material) return material.error();
+  d.material = std::move(*material);
+  d.planeSettings = {.sigma_t = d.material.firstLayerMinSigmaT, .epsilon = 0.01f};
+  auto surface = mesh::DeformableSurface::create(std::move(*loaded), d.planeSettings);
+  if (!surface) return surface.error();
+  d.surface.emplace(std::move(*surface));
+  auto run = scenario::ScenarioRun::create(*parsed);
+  if (!run) return run.error();
+  d.run = std::move(*run);
+  if (d.run->mesh().positions.size() != d.surface->geometricRestPositions().size())
+    return Error{"demo: the simulated mesh has " + std::to_string(d.run->mesh().positions.size()) +
+                 " vertices but the shaded one " +
+                 std::to_string(d.surface->geometricRestPositions().size())};
+  return d;
+}
+
+/// The render step (kept apart so that other shading methods can render the same frames).
+void renderFrame(DemoRenderer& renderer, DemoSetup& d, std::span<const Float3> positions,
+                 const std::filesystem::path& png, std::vector<std::string>& images, nlohmann::json& report) {
+  d.surface->update(positions);
+  if (auto img = renderer.render(*d.surface, d.material, png); img.ok())
+    images.push_back(png.filename().string());
+  else
+    report["render_skipped"] = img.error().message;
+}
+
+/// What the frame loop keeps: per-frame metrics, phase costs, and two snapshots to render.
+struct LoopResult {
+  std::vector<scenario::FrameMetrics> frames;
+  PhaseTimer simulate, gather, normals, planes, tangents;
+  double refittedFraction = 0.0;
+  std::vector<Float3> pokedPositions, liftedPositions;  ///< at the deepest push, the strongest pull
+  long pokedFrame = -1, liftedFrame = -1;
+};
+
+Result<LoopResult> runFrames(DemoSetup& d) {
+  LoopResult r;
+  const int frames = d.run->scenario().frames;
+  double strongestPush = 0.0, strongestPull = 0.0;
+  for (int frame = 0; frame < frames; ++frame) {
+    // 1 simulate: springs, integration, contact and grasp inside each substep.
+    Stopwatch clock;
+    auto metrics = d.run->advance();
+    if (!metrics) return metrics.error();
+    const std::vector<Float3> positions = d.run->positions();
+    r.simulate.add(clock.elapsedMs());
+    // 2-5 positions in, normals, planes, tangents.
+    const auto stats = d.surface->update(positions);
+    r.gather.add(stats.gatherMs), r.normals.add(stats.normalsMs), r.planes.add(stats.planesMs),
+        r.tangents.add(stats.tangentsMs);
+    r.refittedFraction += double(stats.refit.refittedPlanes) / double(positions.size()) / frames;
+    // Snapshots for the renders: the hardest push (no grasp) and the hardest pull (grasping).
+    const double up = metrics->forceN.z;
+    if (metrics->grasped == 0 && up > strongestPush)
+      strongestPush = up, r.pokedPositions = positions, r.pokedFrame = frame;
+    if (metrics->grasped > 0 && -up > strongestPull)
+      strongestPull = -up, r.liftedPositions = positions, r.liftedFrame = frame;
+    r.frames.push_back(*metrics);
+  }
+  return r;
+}
+
+nlohmann::json instrumentReport(const LoopResult& r) {
+  const auto s = scenario::summarize(r.frames);
+  nlohmann::json forces = nlohmann::json::array();
+  for (const auto& f : r.frames)
+    forces.push_back({f.forceN.x, f.forceN.y, f.forceN.z});
+  return {{"frames", s.frames},
+          {"nan_frames", s.nanFrames},
+          {"divergence_events", s.divergenceEvents},
+          {"max_contact_force_N", s.maxForceN},
+          {"mean_contact_force_N", s.meanForceN},
+          {"poked_frame", r.pokedFrame},
+          {"lifted_frame", r.liftedFrame},
+          {"ms_per_frame",
+           {{"integrate", s.meanIntegrateMs}, {"contact", s.meanContactMs}, {"check", s.meanCheckMs}}},
+          {"contact_force_N_per_frame", forces}};
+}
+
 }  // namespace
 
 Result<nlohmann::json> runDemo(const DemoOptions& o) {
-  // Setup: the organ, its material, and the shading state that follows it.
-  const auto meshPath =
-      o.meshFile.empty() ? dataDir() / "meshes" / "liver.obj" : std::filesystem::path(o.meshFile);
-  auto loaded = mesh::loadMesh(meshPath, {.requireUvs = true});
-  if (!loaded) return loaded.error();
-  auto material = readLayeredMaterial(materialFileFor(meshPath));
-  if (!material) return material.error();
-  const mesh::PlaneFitSettings planeSettings{.sigma_t = material->firstLayerMinSigmaT, .epsilon = 0.01f};
-  auto surfaceResult = mesh::DeformableSurface::create(std::move(*loaded), planeSettings);
-  if (!surfaceResult) return surfaceResult.error();
-  auto& surface = *surfaceResult;
-  if (o.frames < 1) return Error{"--frames must be at least 1"};
-
-  const auto rest = surface.geometricRestPositions();
-  std::vector<Float3> restNormals(rest.size()), positions(rest.size());
-  mesh::computeVertexNormals(rest, surface.geometricTriangles(), restNormals);
-  const std::uint32_t site = topVertex(rest);
+  // Setup: the organ, its material, the shading state that follows it, and the scenario.
+  auto setup = setUp(o);
+  if (!setup) return setup.error();
+  DemoSetup& d = *setup;
   DemoRenderer renderer(o.width, o.height);
   nlohmann::json report;
   std::vector<std::string> images;
-  if (auto img = renderer.render(surface, *material, o.outDir / "frame_rest.png"); img.ok())
-    images.push_back("frame_rest.png");
+  const auto rest = d.surface->geometricRestPositions();
+  const std::vector<Float3> restPositions(rest.begin(), rest.end());
 
-  // The frame loop: simulate (procedural poke until the simulator lands), update the mesh's
-  // shading data, render the last frame.
-  PhaseTimer simulate, gather, normals, planes, tangents;
-  double refittedFraction = 0.0;
-  std::size_t moved = 0;
-  for (int frame = 1; frame <= o.frames; ++frame) {
-    Stopwatch clock;
-    const float t = std::min(1.0f, float(frame) / float(std::max(1, o.frames * 2 / 3)));
-    const float depth = o.pokeDepthMm * 0.5f * (1.0f - std::cos(3.14159265f * t));  // ease in and hold
-    moved = applyPoke(rest, restNormals, site, o.pokeFraction, depth, positions).size();
-    simulate.add(clock.elapsedMs());
-    const auto stats = surface.update(positions);
-    gather.add(stats.gatherMs), normals.add(stats.normalsMs), planes.add(stats.planesMs),
-        tangents.add(stats.tangentsMs);
-    refittedFraction += double(stats.refit.refittedPlanes) / double(rest.size()) / o.frames;
-  }
+  // The frame loop: simulate, then update the mesh's shading data (named, timed phases).
+  auto loop = runFrames(d);
+  if (!loop) return loop.error();
+  const LoopResult& r = *loop;
   // Check: the incremental planes equal a full re-fit of the final shape.
-  std::vector<Float4> incremental(surface.planes().begin(), surface.planes().end());
-  surface.refitAllPlanes();
-  const auto deviation = mesh::comparePlanes(incremental, surface.planes());
-  if (auto img = renderer.render(surface, *material, o.outDir / "frame_poked.png"); img.ok()) {
-    images.push_back("frame_poked.png");
+  std::vector<Float4> incremental(d.surface->planes().begin(), d.surface->planes().end());
+  d.surface->refitAllPlanes();
+  const auto deviation = mesh::comparePlanes(incremental, d.surface->planes());
+  if (auto w = writeTextFileAtomic(o.outDir / "frames.csv", scenario::framesCsv(r.frames)); !w)
+    return w.error();
+
+  // Render: rest, the deepest poke, the strongest lift; inspection of the poked organ.
+  const std::vector<Float3>& poked = r.pokedPositions.empty() ? restPositions : r.pokedPositions;
+  renderFrame(renderer, d, restPositions, o.outDir / "frame_rest.png", images, report);
+  if (!r.liftedPositions.empty())
+    renderFrame(renderer, d, r.liftedPositions, o.outDir / "frame_lifted.png", images, report);
+  renderFrame(renderer, d, poked, o.outDir / "frame_poked.png", images, report);
+  if (!report.contains("render_skipped")) {
     report["render"] = renderer.info();
     report["render"]["images"] = images;
-  } else {
-    report["render_skipped"] = img.error().message;
   }
-
-  // Inspection: the poked organ with its shading fields, for ParaView.
-  if (auto vtp = writeInspection(surface, o.outDir / "organ_poked.vtp"); !vtp) return vtp.error();
+  if (auto vtp = writeInspection(*d.surface, o.outDir / "organ_poked.vtp"); !vtp) return vtp.error();
   report["inspection"] = "organ_poked.vtp";
 
-  report["mesh"] = meshPath.string();
-  report["material"] = material->name;
+  report["mesh"] = d.meshPath.string();
+  report["scenario"] = d.run->scenario().file.string();
+  report["material"] = d.material.name;
   report["vertices"] = rest.size();
-  report["triangles"] = surface.triangles().size();
-  report["sigma_t_per_mm"] = planeSettings.sigma_t;
-  report["plane_radius_mm"] = planeSettings.radiusMm();
-  report["frames"] = o.frames;
-  report["poke"] = {{"moved_fraction", double(moved) / double(rest.size())}, {"depth_mm", o.pokeDepthMm}};
-  report["phases_ms"] = {{"1 simulate (procedural poke)", simulate.meanMs()},
-                         {"2 positions in", gather.meanMs()},
-                         {"3 normals", normals.meanMs()},
-                         {"4 planes (incremental)", planes.meanMs()},
-                         {"5 tangent frames", tangents.meanMs()}};
-  report["refit"] = {{"mean_refitted_fraction", refittedFraction},
+  report["triangles"] = d.surface->triangles().size();
+  report["springs"] = d.run->simulator().system().springs.size();
+  report["sigma_t_per_mm"] = d.planeSettings.sigma_t;
+  report["plane_radius_mm"] = d.planeSettings.radiusMm();
+  report["frames"] = r.frames.size();
+  report["instrument"] = instrumentReport(r);
+  report["phases_ms"] = {{"1 simulate (springs, contact, grasp)", r.simulate.meanMs()},
+                         {"2 positions in", r.gather.meanMs()},
+                         {"3 normals", r.normals.meanMs()},
+                         {"4 planes (incremental)", r.planes.meanMs()},
+                         {"5 tangent frames", r.tangents.meanMs()}};
+  report["refit"] = {{"mean_refitted_fraction", r.refittedFraction},
                      {"max_normal_deviation_rad", deviation.maxAngleRad},
                      {"max_offset_deviation_mm", deviation.maxOffsetMm}};
   report["out"] = o.outDir.string();
   if (auto w = writeTextFileAtomic(o.outDir / "report.json", report.dump(2) + "\n"); !w) return w.error();
   if (auto w = writeTextFileAtomic(o.outDir / "report.md", markdownReport(report)); !w) return w.error();
+  report["instrument"].erase("contact_force_N_per_frame");  // stdout: the summary; files: every frame
   return report;
 }
 

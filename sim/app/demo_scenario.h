@@ -13,10 +13,9 @@ namespace tissue::sim_app {
 /// Settings of the demo scenario (plain struct with defaults).
 struct DemoOptions {
   std::filesystem::path outDir;
-  std::string meshFile;  ///< empty: data/meshes/liver.obj
-  int frames = 60;
-  double pokeFraction = 0.05;  ///< fraction of vertices the instrument moves
-  float pokeDepthMm = 12.0f;   ///< deepest indentation, mm
+  std::string scenarioFile;  ///< empty: data/scenarios/liver_poke_grasp.json (docs/SCENARIOS.md)
+  std::string meshFile;      ///< empty: the scenario's mesh; must have UVs and a material file
+  int frames = 0;            ///< 0: the scenario's frames
   int width = 960;
   int height = 720;
 };

@@ -53,7 +53,8 @@ Simulator::Simulator(MassSpringSystem system, State initial, const SimulatorConf
       m_state(std::move(initial)),
       m_config(config),
       m_integrator(config.integrator),
-      m_substeps(config.substeps) {
+      m_substeps(config.substeps),
+      m_baseInvMasses(m_system.invMasses) {
   // Energy floor of the blow-up test: every spring strained by floorStrain, plus every mass
   // dropped by the mean rest length under gravity (what a release from rest may gain).
   const SpringNetwork& s = m_system.springs;
@@ -68,13 +69,39 @@ Simulator::Simulator(MassSpringSystem system, State initial, const SimulatorConf
     m_energyFloor += m * g * meanRest;
 }
 
+Result<void> Simulator::setKinematic(std::span<const std::uint32_t> vertices) {
+  for (std::uint32_t k : vertices)
+    if (k >= m_system.vertexCount())
+      return Error{"simulator: kinematic vertex " + std::to_string(k) + " is out of range (" +
+                   std::to_string(m_system.vertexCount()) + " vertices)"};
+  m_system.invMasses = m_baseInvMasses;
+  for (std::uint32_t k : vertices)
+    m_system.invMasses[k] = 0.0;
+  m_workspace.previousDeltaV.clear();  // the warm start belonged to the old set of free vertices
+  return {};
+}
+
 std::string Simulator::tryFrame(Integrator integrator, int substeps, double energyCeiling,
                                 FrameReport& report) {
   const double h = m_config.frameTime / substeps;
   for (int k = 0; k < substeps; ++k) {
+    if (m_hook) m_substepStartX = m_state.x;  // for the hook's swept contact
     Stopwatch integrate;
     report.cgIterations += step(integrator, m_system, m_state, h, m_workspace, m_config.solver).cgIterations;
     report.integrateMs += integrate.elapsedMs();
+    if (m_hook) {
+      // Energy a kinematic hook puts in (a tool pushing or pulling) is not a divergence: the
+      // blow-up ceiling rises by it.
+      Stopwatch hook;
+      const double before = kineticEnergy(m_system, m_state.v) + elasticEnergy(m_system, m_state.x);
+      const double frameStart = static_cast<double>(m_frame) * m_config.frameTime;
+      m_hook->afterSubstep(
+          m_system, m_state,
+          {m_frame, frameStart, m_config.frameTime, frameStart + k * h, h, k, substeps, m_substepStartX});
+      const double after = kineticEnergy(m_system, m_state.v) + elasticEnergy(m_system, m_state.x);
+      if (after > before) energyCeiling += m_config.limits.energyGrowth * (after - before);
+      report.hookMs += hook.elapsedMs();
+    }
 
     // Divergence check within the step: non-finite, over-stretched, energy blow-up.
     Stopwatch check;
@@ -98,6 +125,7 @@ FrameReport Simulator::advanceFrame() {
   const double startEnergy = kineticEnergy(m_system, m_state.v) + elasticEnergy(m_system, m_state.x);
   const double energyCeiling = m_config.limits.energyGrowth * std::max(startEnergy, m_energyFloor);
   report.rollbackMs += save.elapsedMs();
+  if (m_hook) m_hook->beginFrame(m_system, m_state, m_frame);
 
   Integrator integrator = m_integrator;
   int substeps = m_substeps;
@@ -109,6 +137,7 @@ FrameReport Simulator::advanceFrame() {
     Stopwatch rollback;
     m_state = m_frameStart;
     m_workspace.previousDeltaV.clear();
+    if (m_hook) m_hook->restartFrame();
     report.rollbackMs += rollback.elapsedMs();
     DivergenceEvent event{m_frame, reason, integrator, substeps, integrator, substeps, true};
     if (substeps * 2 <= m_config.recovery.maxSubsteps) {
@@ -120,6 +149,7 @@ FrameReport Simulator::advanceFrame() {
       // Nothing left to try: keep the last good state, at rest, and say so.
       for (Vec3d& v : m_state.v)
         v = {};
+      if (m_hook) m_hook->restartFrame();  // the hook, too, stays at the frame start
       event.recovered = false;
       report.events.push_back(event);
       break;

@@ -41,7 +41,10 @@ class SeamSplitter {
     if (m_withUvs) m_out.uvs.push_back(uv);
     // Geometric vertices are numbered in order of first use, so points no face uses are dropped.
     auto [it, inserted] = m_compact.emplace(std::uint32_t(point), m_out.geometricVertexCount);
-    if (inserted) ++m_out.geometricVertexCount;
+    if (inserted) {
+      ++m_out.geometricVertexCount;
+      m_out.geometricSourceIndex.push_back(std::uint32_t(point));
+    }
     m_out.geometricIndex.push_back(it->second);
   }
   SurfaceMesh& m_out;

@@ -1,5 +1,6 @@
-// tissue-sim demo: the default headless scenario (the README's main job). It pokes the data/
-// liver over a short frame loop, keeps normals, tangent frames and the local planes of
+// tissue-sim demo: the default headless scenario (the README's main job). The simulator runs
+// data/scenarios/liver_poke_grasp.json (a sphere pokes, grasps, lifts and releases the data/
+// liver, reporting the contact force every frame), keeps normals, tangent frames and the local planes of
 // subsurface texture mapping in step, renders the organ before and after (when a GL context
 // can be created), and writes a report. Each frame is a sequence of named, timed phases.
 #include <cmath>
@@ -14,12 +15,12 @@ namespace tissue::sim_app {
 void registerDemoCommand(CLI::App& app, const GlobalOptions& global, int& exitCode) {
   auto o = std::make_shared<DemoOptions>();
   auto* cmd = app.add_subcommand(
-      "demo", "the default headless scenario: poke the liver, update shading data, render, report");
+      "demo", "the default headless scenario: poke and grasp the liver, update shading data, render, report");
   cmd->add_option("--out", o->outDir, "output folder for images and the report")->required();
-  cmd->add_option("--mesh", o->meshFile, "organ mesh with UVs (default: data/meshes/liver.obj)");
-  cmd->add_option("--frames", o->frames, "frames to simulate (default 60)");
-  cmd->add_option("--poke-fraction", o->pokeFraction,
-                  "fraction of vertices the instrument moves (default 0.05)");
+  cmd->add_option("--scenario", o->scenarioFile,
+                  "scenario file (default: data/scenarios/liver_poke_grasp.json, docs/SCENARIOS.md)");
+  cmd->add_option("--mesh", o->meshFile, "organ mesh with UVs instead of the scenario's");
+  cmd->add_option("--frames", o->frames, "frames to simulate (default: the scenario's)");
   cmd->add_option("--width", o->width, "image width in pixels (default 960)");
   cmd->add_option("--height", o->height, "image height in pixels (default 720)");
   cmd->callback([o, &global, &exitCode] {

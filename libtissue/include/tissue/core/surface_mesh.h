@@ -22,6 +22,9 @@ struct SurfaceMesh {
   std::vector<Triangle> triangles;            ///< render-vertex indices, counter-clockwise outside
   std::vector<std::uint32_t> geometricIndex;  ///< #render vertices; geometric vertex of each
   std::uint32_t geometricVertexCount = 0;     ///< number of distinct geometric vertices
+  /// #geometric vertices when loaded from a file: each geometric vertex's 0-based index among
+  /// the file's vertices (geometric vertices are numbered in order of first use); else empty.
+  std::vector<std::uint32_t> geometricSourceIndex;
 
   bool hasUvs() const { return !uvs.empty() && uvs.size() == positions.size(); }
   std::size_t vertexCount() const { return positions.size(); }

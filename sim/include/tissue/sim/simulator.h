@@ -10,6 +10,7 @@
 
 #include "tissue/core/result.h"
 #include "tissue/sim/integrators.h"
+#include "tissue/sim/substep_hook.h"
 #include "tissue/sim/system.h"
 
 namespace tissue::sim {
@@ -61,6 +62,7 @@ struct FrameReport {
   double integrateMs = 0.0;  ///< forces and integration
   double checkMs = 0.0;      ///< divergence checks
   double rollbackMs = 0.0;   ///< saving and restoring state
+  double hookMs = 0.0;       ///< the substep hook (contact, grasp), every try of the frame
 };
 
 /// A system, its state and the frame loop. After a recovery the more stable setting is kept
@@ -72,6 +74,13 @@ class Simulator {
 
   /// Advances one frame (config.frameTime seconds).
   FrameReport advanceFrame();
+
+  /// Runs `hook` inside every substep (nullptr: none). Not owned; it must outlive its use.
+  void setSubstepHook(SubstepHook* hook) { m_hook = hook; }
+  /// Makes `vertices` kinematic (inverse mass 0: no force moves them, a hook sets their motion)
+  /// in addition to the pinned ones, replacing the previous kinematic set; an empty span frees
+  /// them again (inverse mass 1/m, unless pinned). Fails on an index out of range.
+  Result<void> setKinematic(std::span<const std::uint32_t> vertices);
 
   const State& state() const { return m_state; }
   const MassSpringSystem& system() const { return m_system; }
@@ -93,6 +102,9 @@ class Simulator {
   long m_frame = 0;
   double m_energyFloor = 0.0;
   StepWorkspace m_workspace;
+  SubstepHook* m_hook = nullptr;
+  std::vector<Vec3d> m_substepStartX;   ///< mm, positions before the current step (hook only)
+  std::vector<double> m_baseInvMasses;  ///< inverse masses with the pins only (1/g)
 };
 
 }  // namespace tissue::sim

@@ -1,0 +1,115 @@
+// tissue-sim simulate SCENARIO.json: runs a scenario file (docs/SCENARIOS.md) and writes the
+// per-frame metrics (frames.csv), a summary (summary.json), and with --images a render of the
+// last frame.
+#include <cmath>
+#include <iostream>
+
+#include "command.h"
+#include "demo_render.h"
+#include "material_file.h"
+#include "output.h"
+#include "tissue/core/atomic_file.h"
+#include "tissue/core/stopwatch.h"
+#include "tissue/mesh/deformable_surface.h"
+#include "tissue/mesh/load_mesh.h"
+#include "tissue/scenario/scenario_run.h"
+
+namespace tissue::sim_app {
+namespace {
+
+struct SimulateOptions {
+  std::string scenario;
+  std::string outDir;
+  int frames = 0;  ///< 0: the scenario's
+  bool images = false;
+};
+
+/// Renders the run's current shape with the basic renderer: needs UVs and a material file.
+Result<std::string> renderLastFrame(const scenario::ScenarioRun& run, const std::filesystem::path& png) {
+  auto loaded = mesh::loadMesh(run.scenario().mesh,
+                               {.requireUvs = true, .scaleToMm = float(run.scenario().meshScaleToMm)});
+  if (!loaded) return loaded.error();
+  auto material = readLayeredMaterial(materialFileFor(run.scenario().mesh));
+  if (!material) return material.error();
+  auto surface =
+      mesh::DeformableSurface::create(std::move(*loaded), {.sigma_t = material->firstLayerMinSigmaT});
+  if (!surface) return surface.error();
+  if (surface->geometricRestPositions().size() != run.mesh().positions.size())
+    return Error{"the rendered mesh and the simulated mesh differ in vertex count"};
+  surface->update(run.positions());
+  DemoRenderer renderer(960, 720);
+  if (auto ok = renderer.render(*surface, *material, png); !ok) return ok.error();
+  return png.filename().string();
+}
+
+nlohmann::json summaryJson(const scenario::ScenarioRun& run, const scenario::RunSummary& s, double wallMs) {
+  return {{"scenario", run.scenario().file.string()},
+          {"mesh", run.scenario().mesh.string()},
+          {"vertices", run.mesh().positions.size()},
+          {"springs", run.simulator().system().springs.size()},
+          {"integrator", sim::integratorName(run.simulator().integrator())},
+          {"frames", s.frames},
+          {"nan_frames", s.nanFrames},
+          {"divergence_events", s.divergenceEvents},
+          {"max_contact_force_N", s.maxForceN},
+          {"mean_contact_force_N", s.meanForceN},
+          {"ms_per_frame",
+           {{"integrate", s.meanIntegrateMs},
+            {"contact", s.meanContactMs},
+            {"check", s.meanCheckMs},
+            {"rollback", s.meanRollbackMs},
+            {"actions", s.meanActionMs},
+            {"total", s.meanTotalMs}}},
+          {"wall_ms", wallMs}};
+}
+
+int runSimulate(const SimulateOptions& o, const GlobalOptions& global) {
+  auto parsed = scenario::loadScenario(o.scenario, {.sharedMeshesDir = sharedDir() / "meshes"});
+  if (!parsed) return fail("simulate", parsed.error().message);
+  if (o.frames > 0) parsed->frames = o.frames;
+  auto run = scenario::ScenarioRun::create(*parsed);
+  if (!run) return fail("simulate", run.error().message);
+  const std::filesystem::path out =
+      o.outDir.empty() ? std::filesystem::path("out") / std::filesystem::path(o.scenario).stem()
+                       : std::filesystem::path(o.outDir);
+
+  Stopwatch wall;
+  std::vector<scenario::FrameMetrics> frames;
+  frames.reserve(static_cast<std::size_t>(parsed->frames));
+  for (int f = 0; f < parsed->frames; ++f) {
+    auto m = (*run)->advance();
+    if (!m) return fail("simulate", m.error().message);
+    frames.push_back(*m);
+  }
+  nlohmann::json summary = summaryJson(**run, scenario::summarize(frames), wall.elapsedMs());
+  if (auto ok = writeTextFileAtomic(out / "frames.csv", scenario::framesCsv(frames)); !ok)
+    return fail("simulate", ok.error().message);
+  summary["frames_csv"] = (out / "frames.csv").string();
+  if (o.images) {
+    auto image = renderLastFrame(**run, out / "last_frame.png");
+    if (image)
+      summary["image"] = (out / *image).string();
+    else
+      summary["image_skipped"] = image.error().message;
+  }
+  if (auto ok = writeTextFileAtomic(out / "summary.json", summary.dump(2) + "\n"); !ok)
+    return fail("simulate", ok.error().message);
+  printResult(global, summary);
+  return summary["nan_frames"].get<long>() == 0 ? 0
+                                                : fail("simulate", "some frames held NaN; see frames.csv");
+}
+
+}  // namespace
+
+void registerSimulateCommand(CLI::App& app, const GlobalOptions& global, int& exitCode) {
+  auto o = std::make_shared<SimulateOptions>();
+  auto* cmd = app.add_subcommand("simulate",
+                                 "run a scenario file; write per-frame metrics (frames.csv) and a summary");
+  cmd->add_option("scenario", o->scenario, "scenario file (JSON, docs/SCENARIOS.md)")->required();
+  cmd->add_option("--out", o->outDir, "output folder (default out/<scenario name>)");
+  cmd->add_option("--frames", o->frames, "frames to run instead of the scenario's");
+  cmd->add_flag("--images", o->images, "also render the last frame (needs UVs and a material file)");
+  cmd->callback([o, &global, &exitCode] { exitCode = runSimulate(*o, global); });
+}
+
+}  // namespace tissue::sim_app

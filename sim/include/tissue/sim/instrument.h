@@ -1,0 +1,118 @@
+#pragma once
+/// \file
+/// The instrument: a rigid tool tip (sphere or capsule, contact.h) that follows a path of
+/// keyframes or live input, pushes tissue by kinematic contact, grasps and releases it, and
+/// reports the force on the tool every frame (what a haptic device needs).
+///
+/// Contact is kinematic and runs inside every simulation substep (a SubstepHook): the tool moves
+/// from its pose at the substep's start to its pose at the end in sub-moves no longer than
+/// `maxSubMoveFraction` times its radius; after each sub-move every free vertex inside the tool
+/// is projected onto its surface and loses its inward normal velocity relative to the tool.
+/// A vertex cannot end up behind the tool's core, because no sub-move is long enough to carry the
+/// core past a vertex it has not yet pushed: no tunnelling at any tool speed. The cost is
+/// O(sub-moves x vertices) per substep (a distance test per vertex, most rejected by a bounding
+/// sphere), i.e. one extra pass over the vertices per sub-move; a fast tool costs more sub-moves.
+/// Tissue moving into a resting tool is caught at the substep rate (springs cannot carry a vertex
+/// through the tool within one substep unless it moves more than a radius per substep).
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "tissue/core/result.h"
+#include "tissue/sim/contact.h"
+#include "tissue/sim/substep_hook.h"
+
+namespace tissue::sim {
+
+class Simulator;
+
+/// One keyframe of a scripted path.
+struct ToolKeyframe {
+  double time = 0.0;  ///< s, strictly increasing along a path
+  ToolPose pose;      ///< mm (and the unit axis of a capsule)
+};
+
+/// The pose on a path at time `t` (s): linear interpolation of the position and of the axis
+/// (renormalised) between the keyframes around t, the end keyframes held outside the path.
+ToolPose poseOnPath(std::span<const ToolKeyframe> path, double t);
+
+/// Instrument settings (plain struct with defaults).
+struct InstrumentConfig {
+  ToolShape shape{};
+  double maxSubMoveFraction = 0.25;  ///< longest sub-move, as a fraction of the radius (0, 1]
+  double graspMarginMm = 0.5;        ///< grasp takes the vertices within radius + this (mm)
+};
+
+/// What the instrument did during one frame.
+struct InstrumentFrameReport {
+  /// Force on the tool (N), averaged over the frame:
+  ///   F = -(1/T) sum_substeps sum_projected m dv  +  (1/T) sum_substeps h sum_grasped f_k,
+  /// the reaction to the momentum the projections gave the tissue, plus (while grasping) the
+  /// spring, spring-damping and gravity forces f_k on the grasped vertices, which the tool holds.
+  /// For a vertex resting on the tool the projection removes exactly the normal velocity that the
+  /// springs and gravity added during the substep, so the first term already is the force that
+  /// resting vertices transmit (adding it again would count it twice). T = frame time (s).
+  Vec3d forceN{};
+  std::uint32_t contacts = 0;  ///< vertices projected by the frame's last sub-move
+  std::uint32_t grasped = 0;   ///< vertices held
+  int subMoves = 0;            ///< sub-moves over the frame's substeps (last try of the frame)
+  ToolPose pose{};             ///< the tool at the end of the frame
+};
+
+/// A tool tip driven by a path or by live input; plug it into a Simulator with
+/// setSubstepHook(&instrument). It acts on the simulated vertices (for an embedded lattice the
+/// projection runs on the embedded surface and its corrections are scattered to the nodes; see
+/// projectOutOfTool).
+class Instrument final : public SubstepHook {
+ public:
+  /// A tool following `path` (at least one keyframe; times strictly increasing, s). Fails on a
+  /// bad shape (radius <= 0, capsule length < 0), a zero axis, non-finite values, or unsorted times.
+  static Result<Instrument> create(const InstrumentConfig& config, std::vector<ToolKeyframe> path);
+  /// A tool under live input starting at `pose`; move it with setTarget.
+  static Result<Instrument> createLive(const InstrumentConfig& config, const ToolPose& pose);
+
+  /// Live input (viewer, haptic device): the tool moves linearly to `pose` over the next frame.
+  /// Switches a path-driven tool to live input.
+  void setTarget(const ToolPose& pose);
+
+  /// Attaches the free vertices within radius + graspMarginMm of the tool: from now on they
+  /// follow it rigidly (kinematic: inverse mass 0 in `simulator`), keeping their offsets, turned
+  /// with a capsule's axis. Replaces a previous grasp. Returns how many were taken.
+  Result<std::uint32_t> grasp(Simulator& simulator);
+  /// Lets the grasped vertices go with their current velocity (the tool's).
+  Result<void> release(Simulator& simulator);
+
+  bool grasping() const { return !m_grasped.empty(); }
+  std::span<const std::uint32_t> graspedVertices() const { return m_grasped; }
+  const ToolPose& pose() const { return m_pose; }
+  const InstrumentConfig& config() const { return m_config; }
+  /// The last frame's force, contacts and pose.
+  InstrumentFrameReport lastFrame() const;
+
+  void beginFrame(const MassSpringSystem& system, const State& state, long frame) override;
+  void restartFrame() override;
+  void afterSubstep(const MassSpringSystem& system, State& state, const SubstepInfo& info) override;
+
+ private:
+  Instrument(const InstrumentConfig& config, std::vector<ToolKeyframe> path, const ToolPose& start);
+  ToolPose poseAt(double t, const SubstepInfo& info) const;
+  void moveGrasped(const MassSpringSystem& system, State& state, const ToolPose& from, const ToolPose& to,
+                   double h);
+
+  InstrumentConfig m_config;
+  std::vector<ToolKeyframe> m_path;  ///< empty under live input
+  ToolPose m_pose;                   ///< now (end of the last substep)
+  ToolPose m_frameStartPose, m_liveTarget;
+  std::vector<std::uint32_t> m_grasped;
+  std::vector<Vec3d> m_graspOffsets;  ///< mm, vertex minus tool centre at grasp time
+  Vec3d m_graspAxis{0.0, 0.0, 1.0};   ///< the tool's axis at grasp time
+  // Accumulated over the frame's current try.
+  Vec3d m_impulse{};       ///< g*mm/s given to the tissue by projections
+  Vec3d m_graspImpulse{};  ///< g*mm/s: sum of h * forces on the grasped vertices
+  double m_time = 0.0;     ///< s covered by the frame's substeps so far
+  std::uint32_t m_lastContacts = 0;
+  int m_subMoves = 0;
+};
+
+}  // namespace tissue::sim

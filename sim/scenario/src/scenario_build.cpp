@@ -1,0 +1,102 @@
+// Scenario -> mesh, springs, masses, pins: the mass-spring system.
+#include <string>
+#include <unordered_map>
+
+#include "tissue/mesh/load_mesh.h"
+#include "tissue/scenario/scenario.h"
+
+namespace tissue::scenario {
+namespace {
+
+Error keyError(const Scenario& s, const std::string& key, const std::string& what) {
+  return Error{s.file.string() + ": " + key + ": " + what};
+}
+
+/// The pinned vertices (geometric indices) from the list of file indices or the region.
+Result<std::vector<std::uint32_t>> pinnedVertices(const Scenario& s, const ScenarioMesh& mesh) {
+  std::vector<std::uint32_t> out;
+  if (s.pinnedRegion) {
+    for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
+      const Float3& p = mesh.positions[v];
+      const double c = s.pinnedRegion->axis == 0 ? p.x : s.pinnedRegion->axis == 1 ? p.y : p.z;
+      if (c <= s.pinnedRegion->belowMm) out.push_back(v);
+    }
+    if (out.empty())
+      return keyError(s, "pinned.below", "pins no vertex; raise it above the mesh's lowest point");
+    return out;
+  }
+  std::unordered_map<std::uint32_t, std::uint32_t> geometricOf;
+  for (std::uint32_t v = 0; v < mesh.fileIndex.size(); ++v)
+    geometricOf.emplace(mesh.fileIndex[v], v);
+  for (std::size_t k = 0; k < s.pinnedIndices.size(); ++k) {
+    const auto it = geometricOf.find(s.pinnedIndices[k]);
+    if (it == geometricOf.end())
+      return keyError(s, "pinned[" + std::to_string(k) + "]",
+                      "vertex " + std::to_string(s.pinnedIndices[k]) + " is not a vertex of a face of " +
+                          s.mesh.string() + " (" + std::to_string(mesh.positions.size()) + " used vertices)");
+    out.push_back(it->second);
+  }
+  return out;
+}
+
+}  // namespace
+
+Result<ScenarioMesh> loadScenarioMesh(const Scenario& s) {
+  const std::string ext = s.mesh.extension().string();
+  if (s.springSource == SpringSource::TetEdges || ext == ".vtk" || ext == ".vtu" || ext == ".msh")
+    return keyError(
+        s, "mesh",
+        "tetrahedral meshes (.vtk, .vtu, .msh) and springs.from = \"tet-edges\" are not available in this "
+        "build; use a surface mesh (.obj, .ply, .off, .stl) with springs.from = \"surface\"");
+  auto loaded = mesh::loadMesh(s.mesh, {.scaleToMm = static_cast<float>(s.meshScaleToMm)});
+  if (!loaded) return keyError(s, "mesh", loaded.error().message);
+  ScenarioMesh m;
+  m.surface = std::move(*loaded);
+  m.positions.resize(m.surface.geometricVertexCount);
+  for (std::size_t r = 0; r < m.surface.positions.size(); ++r)
+    m.positions[m.surface.geometricIndex[r]] = m.surface.positions[r];
+  m.triangles.reserve(m.surface.triangles.size());
+  for (const Triangle& t : m.surface.triangles)
+    m.triangles.push_back(
+        {m.surface.geometricIndex[t[0]], m.surface.geometricIndex[t[1]], m.surface.geometricIndex[t[2]]});
+  m.fileIndex = m.surface.geometricSourceIndex;
+  if (m.fileIndex.size() != m.positions.size()) {  // a loader without the map: first-use order
+    m.fileIndex.resize(m.positions.size());
+    for (std::uint32_t v = 0; v < m.fileIndex.size(); ++v)
+      m.fileIndex[v] = v;
+  }
+  return m;
+}
+
+Result<sim::SpringNetwork> buildSpringsFromScenario(const Scenario& s, const ScenarioMesh& mesh) {
+  switch (s.springSource) {
+    case SpringSource::Surface: {
+      auto springs = sim::buildSurfaceSprings(mesh.positions, mesh.triangles, s.springs);
+      if (!springs) return keyError(s, "springs", springs.error().message);
+      return springs;
+    }
+    case SpringSource::TetEdges:
+      return keyError(
+          s, "springs.from",
+          "\"tet-edges\" is not available in this build (it needs the volume module); use \"surface\"");
+    case SpringSource::Lattice:
+      return keyError(
+          s, "springs.from",
+          "\"lattice\" is not available in this build (it needs the volume module); use \"surface\"");
+  }
+  return keyError(s, "springs.from", "unknown source");
+}
+
+Result<sim::MassSpringSystem> buildSystem(const Scenario& s, const ScenarioMesh& mesh) {
+  auto springs = buildSpringsFromScenario(s, mesh);
+  if (!springs) return springs.error();
+  auto masses = sim::computeMasses(mesh.positions, mesh.triangles, s.mass);
+  if (!masses) return keyError(s, "mass", masses.error().message);
+  auto pinned = pinnedVertices(s, mesh);
+  if (!pinned) return pinned.error();
+  auto system = sim::makeSystem(std::move(*springs), std::move(*masses), *pinned, s.system);
+  if (!system) return keyError(s, "pinned", system.error().message);
+  return system;
+}
+
+}  // namespace tissue::scenario

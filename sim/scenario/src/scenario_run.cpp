@@ -1,0 +1,134 @@
+// Running a scenario: frames, scripted grasps and releases, per-frame metrics.
+#include "tissue/scenario/scenario_run.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "tissue/core/stopwatch.h"
+#include "tissue/sim/forces.h"
+
+namespace tissue::scenario {
+namespace {
+
+/// g*mm^2/s^2 per joule: 1 J = 1e3 g * 1e6 mm^2 / s^2.
+constexpr double kEnergyPerJoule = 1e9;
+
+bool stateFinite(const sim::State& s) {
+  for (std::size_t k = 0; k < s.x.size(); ++k)
+    if (!sim::isFinite(s.x[k]) || !sim::isFinite(s.v[k])) return false;
+  return true;
+}
+
+}  // namespace
+
+ScenarioRun::ScenarioRun(Scenario scenario, ScenarioMesh mesh, sim::Simulator simulator)
+    : m_scenario(std::move(scenario)), m_mesh(std::move(mesh)), m_simulator(std::move(simulator)) {}
+
+Result<std::unique_ptr<ScenarioRun>> ScenarioRun::create(const Scenario& scenario) {
+  auto mesh = loadScenarioMesh(scenario);
+  if (!mesh) return mesh.error();
+  auto system = buildSystem(scenario, *mesh);
+  if (!system) return system.error();
+  sim::SimulatorConfig config{.integrator = scenario.integrator,
+                              .frameTime = scenario.frameTime,
+                              .substeps = scenario.substeps,
+                              .solver = scenario.solver};
+  auto simulator = sim::Simulator::create(std::move(*system), sim::restState(mesh->positions), config);
+  if (!simulator) return Error{scenario.file.string() + ": " + simulator.error().message};
+  std::unique_ptr<ScenarioRun> run(new ScenarioRun(scenario, std::move(*mesh), std::move(*simulator)));
+  if (scenario.instrument) {
+    auto tool = sim::Instrument::create(scenario.instrument->config, scenario.instrument->path);
+    if (!tool) return Error{scenario.file.string() + ": instrument: " + tool.error().message};
+    run->m_instrument.emplace(std::move(*tool));
+    run->m_simulator.setSubstepHook(&*run->m_instrument);
+  }
+  return run;
+}
+
+Result<FrameMetrics> ScenarioRun::advance() {
+  Stopwatch total;
+  FrameMetrics m;
+  m.frame = m_simulator.frame();
+  // Scripted grasps and releases due before this frame starts.
+  Stopwatch actions;
+  const double start = static_cast<double>(m_simulator.frame()) * m_scenario.frameTime;
+  if (m_instrument) {
+    const auto& list = m_scenario.instrument->actions;
+    for (; m_nextAction < list.size() && list[m_nextAction].time <= start + 1e-9; ++m_nextAction) {
+      if (list[m_nextAction].grasp) {
+        if (auto taken = m_instrument->grasp(m_simulator); !taken) return taken.error();
+      } else if (auto released = m_instrument->release(m_simulator); !released) {
+        return released.error();
+      }
+    }
+  }
+  m.actionMs = actions.elapsedMs();
+
+  const sim::FrameReport report = m_simulator.advanceFrame();
+  const sim::State& state = m_simulator.state();
+  const sim::MassSpringSystem& system = m_simulator.system();
+  m.timeS = start + m_scenario.frameTime;
+  m.integrator = report.integrator;
+  m.substeps = report.substeps;
+  m.divergenceEvents = static_cast<int>(report.events.size());
+  m.integrateMs = report.integrateMs;
+  m.contactMs = report.hookMs;
+  m.checkMs = report.checkMs;
+  m.rollbackMs = report.rollbackMs;
+  if (m_instrument) {
+    const auto tool = m_instrument->lastFrame();
+    m.forceN = tool.forceN;
+    m.contacts = tool.contacts;
+    m.grasped = tool.grasped;
+  }
+  m.forceMagnitudeN = sim::length(m.forceN);
+  m.maxStretch = sim::maxStretch(system, state.x);
+  m.kineticJ = sim::kineticEnergy(system, state.v) / kEnergyPerJoule;
+  m.elasticJ = sim::elasticEnergy(system, state.x) / kEnergyPerJoule;
+  m.finite = stateFinite(state) && std::isfinite(m.forceMagnitudeN);
+  m.totalMs = total.elapsedMs();
+  return m;
+}
+
+RunSummary summarize(const std::vector<FrameMetrics>& frames) {
+  RunSummary s;
+  s.frames = static_cast<long>(frames.size());
+  for (const FrameMetrics& f : frames) {
+    if (!f.finite) ++s.nanFrames;
+    if (std::isfinite(f.forceMagnitudeN)) s.maxForceN = std::max(s.maxForceN, f.forceMagnitudeN);
+    s.meanForceN += f.forceMagnitudeN;
+    s.divergenceEvents += f.divergenceEvents;
+    s.meanIntegrateMs += f.integrateMs;
+    s.meanContactMs += f.contactMs;
+    s.meanCheckMs += f.checkMs;
+    s.meanRollbackMs += f.rollbackMs;
+    s.meanActionMs += f.actionMs;
+    s.meanTotalMs += f.totalMs;
+  }
+  if (s.frames > 0) {
+    const double n = static_cast<double>(s.frames);
+    for (double* x : {&s.meanForceN, &s.meanIntegrateMs, &s.meanContactMs, &s.meanCheckMs, &s.meanRollbackMs,
+                      &s.meanActionMs, &s.meanTotalMs})
+      *x /= n;
+  }
+  return s;
+}
+
+std::string framesCsv(const std::vector<FrameMetrics>& frames) {
+  std::ostringstream out;
+  out.precision(9);
+  out << "frame,time_s,integrator,substeps,force_x_N,force_y_N,force_z_N,force_N,contacts,grasped,max_"
+         "stretch,"
+         "kinetic_J,elastic_J,divergence_events,integrate_ms,contact_ms,check_ms,rollback_ms,action_ms,total_"
+         "ms\n";
+  for (const FrameMetrics& f : frames)
+    out << f.frame << ',' << f.timeS << ',' << sim::integratorName(f.integrator) << ',' << f.substeps << ','
+        << f.forceN.x << ',' << f.forceN.y << ',' << f.forceN.z << ',' << f.forceMagnitudeN << ','
+        << f.contacts << ',' << f.grasped << ',' << f.maxStretch << ',' << f.kineticJ << ',' << f.elasticJ
+        << ',' << f.divergenceEvents << ',' << f.integrateMs << ',' << f.contactMs << ',' << f.checkMs << ','
+        << f.rollbackMs << ',' << f.actionMs << ',' << f.totalMs << '\n';
+  return out.str();
+}
+
+}  // namespace tissue::scenario

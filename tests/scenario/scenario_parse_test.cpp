@@ -1,0 +1,149 @@
+// Scenario files: good ones parse with their units; bad ones fail with one error naming the
+// file and the key.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "tissue/scenario/scenario.h"
+
+namespace tissue::scenario {
+namespace {
+
+const std::filesystem::path kFile = "/virtual/bad.json";
+
+std::string patchMesh() {
+  return (std::filesystem::path(TISSUE_TEST_DATA_DIR) / "meshes" / "patch.obj").string();
+}
+
+/// A valid scenario with `extra` spliced in at the top level (or replacing keys given later).
+std::string scenarioWith(const std::string& springs, const std::string& extra = "") {
+  return R"({"mesh": ")" + patchMesh() + R"(", "springs": )" + springs + R"(, "mass": {"total": 2})" +
+         (extra.empty() ? "" : ", " + extra) + "}";
+}
+
+/// The error of parsing, or of building the springs, of `text`; empty when both succeed.
+std::string errorOf(const std::string& text) {
+  auto s = parseScenario(text, kFile);
+  if (!s) return s.error().message;
+  auto mesh = loadScenarioMesh(*s);
+  if (!mesh) return mesh.error().message;
+  auto system = buildSystem(*s, *mesh);
+  return system ? std::string() : system.error().message;
+}
+
+const std::string kSurface = R"({"from": "surface", "stiffness": 0.1})";
+
+TEST(ScenarioParse, AGoodScenarioKeepsItsValuesAndUnits) {
+  const std::string text = scenarioWith(
+      R"({"from": "surface", "stiffness": 0.3, "stiffness_law": "per-rest-length", "bending_stiffness": 0.05})",
+      R"("damping": {"springs": 0.001, "rayleigh_mass": 1.5}, "gravity": [0, -9806.65, 0], "pinned": [0, 1, 2],
+         "integrator": "verlet", "dt": 0.01, "substeps": 4, "frames": 7,
+         "instrument": {"shape": "capsule", "radius": 2, "length": 10, "axis": [1, 0, 0],
+                        "path": [{"time": 0, "position": [0, 0, 5]}, {"time": 1, "position": [0, 0, -5], "axis": [0, 1, 0]}],
+                        "actions": [{"time": 0.5, "action": "grasp"}]})");
+  auto s = parseScenario(text, kFile);
+  ASSERT_TRUE(s.ok()) << s.error().message;
+  EXPECT_EQ(s->springSource, SpringSource::Surface);
+  EXPECT_EQ(s->springs.law, sim::StiffnessLaw::PerRestLength);
+  EXPECT_DOUBLE_EQ(s->springs.stiffness, 0.3);
+  EXPECT_DOUBLE_EQ(s->springs.damping, 0.001);
+  EXPECT_DOUBLE_EQ(s->system.rayleighMass, 1.5);
+  EXPECT_DOUBLE_EQ(s->mass.total, 2.0);
+  EXPECT_EQ(s->pinnedIndices.size(), 3u);
+  EXPECT_EQ(s->integrator, sim::Integrator::VelocityVerlet);
+  EXPECT_EQ(s->substeps, 4);
+  EXPECT_EQ(s->frames, 7);
+  ASSERT_TRUE(s->instrument.has_value());
+  EXPECT_EQ(s->instrument->config.shape.kind, sim::ToolShapeKind::Capsule);
+  EXPECT_DOUBLE_EQ(s->instrument->path[0].pose.axis.x, 1.0);
+  EXPECT_DOUBLE_EQ(s->instrument->path[1].pose.axis.y, 1.0);
+  EXPECT_TRUE(s->instrument->actions[0].grasp);
+  EXPECT_EQ(errorOf(text), "");
+}
+
+TEST(ScenarioParse, TheDataScenarioParsesAndResolvesItsMesh) {
+  auto s = loadScenario(std::filesystem::path(TISSUE_TEST_DATA_DIR) / "scenarios" / "liver_poke_grasp.json");
+  ASSERT_TRUE(s.ok()) << s.error().message;
+  EXPECT_TRUE(std::filesystem::exists(s->mesh));
+  EXPECT_EQ(s->frames, 1000);
+}
+
+TEST(ScenarioParse, SharedMeshesResolve) {
+  const std::filesystem::path shared = std::filesystem::path(TISSUE_TEST_SHARED_DIR) / "meshes";
+  if (!std::filesystem::exists(shared / "liver-smooth.obj")) GTEST_SKIP() << "no shared meshes";
+  auto s = parseScenario(
+      R"({"mesh": "liver-smooth.obj", "springs": {"from": "surface", "stiffness": 1}, "mass": {"total": 1}})",
+      kFile, {.sharedMeshesDir = shared});
+  ASSERT_TRUE(s.ok()) << s.error().message;
+  EXPECT_EQ(s->mesh, shared / "liver-smooth.obj");
+}
+
+struct BadCase {
+  std::string text, mustContain;
+};
+
+TEST(ScenarioParse, EveryBadScenarioNamesTheFileAndTheKey) {
+  const std::vector<BadCase> cases{
+      {scenarioWith(R"({"from": "surface", "stiffness": -3})"),
+       "bad.json: springs.stiffness: expected a positive number (N/mm), got -3"},
+      {scenarioWith(R"({"from": "surface", "stifness": 3})"), "springs.stifness: unknown key"},
+      {scenarioWith(kSurface, R"("gravty": [0, 0, -9806])"), "gravty: unknown key"},
+      {scenarioWith(R"({"from": "voxels", "stiffness": 1})"), "springs.from: expected one of"},
+      {scenarioWith(R"({"from": "tet-edges", "stiffness": 1})"), "not available in this build"},
+      {scenarioWith(R"({"from": "lattice", "stiffness": 1})", R"("lattice": {"cell_size": 5})"),
+       "springs.from: \"lattice\" is not available in this build"},
+      {scenarioWith(R"({"from": "lattice", "stiffness": 1})"), "lattice: missing"},
+      {scenarioWith(kSurface, R"("gravity": [0, -9806])"), "gravity: expected [x, y, z] (mm/s^2)"},
+      {scenarioWith(kSurface, R"("integrator": "rk4")"), "integrator: expected one of"},
+      {scenarioWith(kSurface, R"("dt": 0)"), "dt: expected a positive number (s per frame), got 0"},
+      {scenarioWith(kSurface, R"("frames": 2.5)"), "frames: expected a positive integer"},
+      {scenarioWith(kSurface, R"("pinned": [0, -1])"), "pinned[1]: expected a vertex index"},
+      {scenarioWith(kSurface, R"("pinned": [0, 99999999])"), "pinned[1]: vertex 99999999 is not a vertex"},
+      {scenarioWith(kSurface, R"("pinned": {"axis": "w", "below": 0})"), "pinned.axis: expected one of"},
+      {scenarioWith(kSurface, R"("pinned": {"axis": "z", "below": -1000})"), "pinned.below: pins no vertex"},
+      {scenarioWith(kSurface, R"("damping": -1)"), "damping: expected a number >= 0 (N*s/mm)"},
+      {R"({"mesh": ")" + patchMesh() +
+           R"(", "springs": {"from": "surface", "stiffness": 1}, "mass": {"total": 1, "density": 0.001}})",
+       "mass: give exactly one of total"},
+      {R"({"mesh": ")" + patchMesh() +
+           R"(", "springs": {"from": "surface", "stiffness": 1}, "mass": {"total": 1, "distribution": "even"}})",
+       "mass.distribution: expected one of"},
+      {R"({"mesh": "nowhere.obj", "springs": {"from": "surface", "stiffness": 1}, "mass": {"total": 1}})",
+       "mesh: no file"},
+      {R"({"springs": {"from": "surface", "stiffness": 1}, "mass": {"total": 1}})", "mesh: missing"},
+      {scenarioWith(
+           kSurface,
+           R"("instrument": {"shape": "cube", "radius": 1, "path": [{"time": 0, "position": [0, 0, 0]}]})"),
+       "instrument.shape: expected one of"},
+      {scenarioWith(
+           kSurface,
+           R"("instrument": {"shape": "sphere", "radius": 0, "path": [{"time": 0, "position": [0, 0, 0]}]})"),
+       "instrument.radius: expected a positive number (mm), got 0"},
+      {scenarioWith(
+           kSurface,
+           R"("instrument": {"shape": "capsule", "radius": 1, "path": [{"time": 0, "position": [0, 0, 0]}]})"),
+       "instrument.length: missing"},
+      {scenarioWith(
+           kSurface,
+           R"("instrument": {"shape": "sphere", "radius": 1, "path": [{"time": 1, "position": [0, 0, 0]}, {"time": 0.5, "position": [0, 0, 1]}]})"),
+       "instrument.path[1].time: keyframe times must increase"},
+      {scenarioWith(
+           kSurface,
+           R"("instrument": {"shape": "sphere", "radius": 1, "path": [{"time": 0, "position": [0, 0]}]})"),
+       "instrument.path[0].position: expected [x, y, z] (mm)"},
+      {scenarioWith(
+           kSurface,
+           R"("instrument": {"shape": "sphere", "radius": 1, "path": [{"time": 0, "position": [0, 0, 0]}], "actions": [{"time": 1, "action": "pinch"}]})"),
+       "instrument.actions[0].action: expected one of"},
+      {"{\"mesh\": ", "bad.json: not valid JSON"},
+  };
+  for (const auto& c : cases) {
+    const std::string error = errorOf(c.text);
+    EXPECT_NE(error.find(c.mustContain), std::string::npos)
+        << "scenario " << c.text << "\n  error: " << error;
+    EXPECT_NE(error.find("bad.json"), std::string::npos) << error;
+  }
+}
+
+}  // namespace
+}  // namespace tissue::scenario
