@@ -4,8 +4,10 @@
 #include <filesystem>
 #include <limits>
 
+#include "../pass_timings_json.h"
 #include "command.h"
 #include "output.h"
+
 #include "tissue/context/headless_context.h"
 #include "tissue/core/image.h"
 #include "tissue/mesh/deformable_surface.h"
@@ -46,13 +48,13 @@ Float3 normalized(Float3 a) {
 }
 
 // The key light sits above, right of and behind the camera, at the camera's distance.
-render::PointLight keyLight(const render::Camera& camera) {
+render::Light keyLight(const render::Camera& camera) {
   const Float3 forward = sub(camera.target, camera.eye);
   const float distance = std::sqrt(forward.x * forward.x + forward.y * forward.y + forward.z * forward.z);
   const Float3 f = normalized(forward);
   const Float3 right = normalized(cross(f, camera.up));
   const Float3 up = cross(right, f);
-  render::PointLight light;
+  render::Light light;
   light.positionMm = add(camera.eye, mul(add(mul(right, 0.6f), mul(up, 0.8f)), distance));
   return light;
 }
@@ -93,7 +95,7 @@ int run(RenderOptions o, const GlobalOptions& global) {
   auto renderer = render::Renderer::create((*context)->procAddressFunction(),
                                            {.shaders = {}, .samples = o.samples, .gpuTimers = true});
   if (!renderer) return fail(cmd, renderer.error().message);
-  if (auto r = renderer->setMesh({m.positions, normals, tangents, m.uvs, m.triangles}); !r) {
+  if (auto r = renderer->setMesh({m.positions, normals, tangents, m.uvs, m.triangles, {}}); !r) {
     return fail(cmd, r.error().message);
   }
   if (!o.baseColor.empty() && hasUvs) {
@@ -116,7 +118,7 @@ int run(RenderOptions o, const GlobalOptions& global) {
   }
   render::Scene scene;
   scene.camera = render::frameBoundingBox(lo, hi, static_cast<float>(o.width) / static_cast<float>(o.height));
-  scene.light = keyLight(scene.camera);
+  scene.lights = {keyLight(scene.camera)};
   auto first = renderer->renderImage(scene, o.width, o.height);
   if (!first) return fail(cmd, first.error().message);
   const double firstMs = renderer->lastTimings().totalCpuMs;
@@ -133,9 +135,7 @@ int run(RenderOptions o, const GlobalOptions& global) {
   out["gl_renderer"] = (*context)->info().renderer;
   out["render_ms"] = t.totalCpuMs;
   out["first_frame_ms"] = firstMs;
-  out["draw_cpu_ms"] = t.drawCpuMs;
-  out["draw_gpu_ms"] = t.drawGpuMs;
-  out["readback_ms"] = t.readbackCpuMs;
+  out["passes"] = passTimingsJson(t);
   out["upload_ms"] = t.uploadCpuMs;
   out["samples"] = o.samples;
   out["triangles"] = m.triangles.size();
