@@ -130,6 +130,9 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
     report["render_skipped"] = img.error().message;
   }
 
+  report["render_separable"] =
+      renderer.renderSeparable(surface, *material, o.outDir / "frame_poked_separable.png");
+
   // Inspection: the poked organ with its shading fields, for ParaView.
   if (auto vtp = writeInspection(surface, o.outDir / "organ_poked.vtp"); !vtp) return vtp.error();
   report["inspection"] = "organ_poked.vtp";
