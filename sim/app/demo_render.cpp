@@ -6,6 +6,7 @@
 
 #include "output.h"
 #include "pass_timings_json.h"
+#include "sss_bench.h"
 #include "sss_material.h"
 #include "tissue/context/headless_context.h"
 #include "tissue/core/image.h"
@@ -124,7 +125,9 @@ nlohmann::json DemoRenderer::renderSeparable(const mesh::DeformableSurface& surf
   auto diffuse = s.renderer->readFrame(render::FrameView::Diffuse);
   auto position = s.renderer->readFrame(render::FrameView::Position);
   auto blurred = s.renderer->readFrame(render::FrameView::BlurredDiffuse);
-  if (!diffuse || !position || !blurred) return j;
+  auto radiance = s.renderer->readFrame(render::FrameView::Radiance);
+  if (!diffuse || !position || !blurred || !radiance) return j;
+  dropPartialCoverage(diffuse->pixels, *radiance);  // MSAA silhouettes are not surface points
   const reference::ScreenBuffers frame{s.width, s.height, diffuse->pixels, position->pixels};
   const std::vector<reference::RadialProfile> profiles{{}, separable->truth};
   if (auto exact = reference::convolveScreen(frame, profiles); exact) {

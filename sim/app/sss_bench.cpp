@@ -15,6 +15,11 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
+void dropPartialCoverage(std::vector<Float4>& diffuse, const render::FloatImage& radiance) {
+  for (std::size_t i = 0; i < diffuse.size() && i < radiance.pixels.size(); ++i)
+    if (radiance.pixels[i].w < 0.999f) diffuse[i].w = 0.0f;
+}
+
 Result<std::pair<double, double>> timeFrames(SssBenchContext& ctx, const std::string& passPrefix) {
   std::vector<double> frame, method;
   for (int i = 0; i <= ctx.frames; ++i) {
@@ -37,8 +42,11 @@ Result<void> ensureReference(SssBenchContext& ctx) {
   if (!diffuse) return diffuse.error();
   auto position = ctx.renderer->readFrame(render::FrameView::Position);
   if (!position) return position.error();
+  auto radiance = ctx.renderer->readFrame(render::FrameView::Radiance);
+  if (!radiance) return radiance.error();
   ctx.diffuse = std::move(diffuse->pixels);
   ctx.position = std::move(position->pixels);
+  dropPartialCoverage(ctx.diffuse, *radiance);
   auto convolved =
       reference::convolveScreen({ctx.width, ctx.height, ctx.diffuse, ctx.position}, ctx.profiles);
   if (!convolved) return convolved.error();

@@ -39,6 +39,11 @@ struct SssBenchContext {
   std::vector<Float3> reference;                   ///< the reference result, per pixel
 };
 
+/// Marks pixels only partly covered by a surface (radiance a < 1 after an MSAA resolve) as
+/// "no object" (id 0) in `diffuse`: the resolve averages their positions and ids with the
+/// background's zeros, so they are not points of the surface and the reference must skip them.
+void dropPartialCoverage(std::vector<Float4>& diffuse, const render::FloatImage& radiance);
+
 /// Renders `ctx.scene` `ctx.frames` times (after one warm-up); median frame ms and the median
 /// summed CPU ms of the passes whose names start with `passPrefix`.
 Result<std::pair<double, double>> timeFrames(SssBenchContext& ctx, const std::string& passPrefix);

@@ -1,4 +1,4 @@
-// tissue-sim sss-bench [--mesh FILE] [--width W --height H] [--frames N] --json: every
+// tissue-sim sss-bench [--mesh FILE] [--width W --height H] [--frames N] [--samples S] --json: every
 // subsurface-scattering method and setting on one frame of the organ, with its time and its
 // image RMS against the CPU reference (the exact screen-space convolution with the material's
 // dipole profile, tissue::reference). Methods add rows through kMethods below.
@@ -27,6 +27,7 @@ struct BenchOptions {
   int width = 320;   // pixels
   int height = 240;  // pixels
   int frames = 5;
+  int samples = 0;  // MSAA
 };
 
 // The organ with normals, tangents and its textures, uploaded as object 1 of the scene.
@@ -84,7 +85,9 @@ int run(const BenchOptions& o, const GlobalOptions& global) {
   ctx.profiles = {reference::RadialProfile{}, truth->truth};
   auto context = context::createHeadlessContext({}, {.backend = "", .log = false});
   if (!context) return fail(cmd, context.error().message);
-  auto renderer = render::Renderer::create((*context)->procAddressFunction());
+  render::RendererSettings settings;
+  settings.samples = o.samples;
+  auto renderer = render::Renderer::create((*context)->procAddressFunction(), settings);
   if (!renderer) return fail(cmd, renderer.error().message);
   ctx.renderer = &*renderer;
   if (auto r = uploadOrgan(ctx, o.mesh); !r) return fail(cmd, o.mesh + ": " + r.error().message);
@@ -107,6 +110,7 @@ int run(const BenchOptions& o, const GlobalOptions& global) {
   out["width"] = o.width;
   out["height"] = o.height;
   out["frames"] = o.frames;
+  out["samples"] = o.samples;
   out["gl_renderer"] = (*context)->info().renderer;
   out["reference"] = "exact screen-space convolution with the normalised dipole profile (tissue::reference)";
   out["results"] = results;
@@ -125,6 +129,7 @@ void registerSssBenchCommand(CLI::App& app, const GlobalOptions& global, int& ex
   cmd->add_option("--width", opts->width, "image width, pixels (default 320)");
   cmd->add_option("--height", opts->height, "image height, pixels (default 240)");
   cmd->add_option("--frames", opts->frames, "timed frames per setting (default 5)");
+  cmd->add_option("--samples", opts->samples, "MSAA samples (default 0 = off)");
   cmd->callback([opts, &global, &exitCode] { exitCode = run(*opts, global); });
 }
 
