@@ -10,6 +10,7 @@
 #include "sss_material.h"
 #include "tissue/context/headless_context.h"
 #include "tissue/core/image.h"
+#include "tissue/core/stopwatch.h"
 #include "tissue/reference/screen_convolution.h"
 #include "tissue/render/renderer.h"
 
@@ -130,7 +131,9 @@ nlohmann::json DemoRenderer::renderSeparable(const mesh::DeformableSurface& surf
   dropPartialCoverage(diffuse->pixels, *radiance);  // MSAA silhouettes are not surface points
   const reference::ScreenBuffers frame{s.width, s.height, diffuse->pixels, position->pixels};
   const std::vector<reference::RadialProfile> profiles{{}, separable->truth};
+  Stopwatch watch;
   if (auto exact = reference::convolveScreen(frame, profiles); exact) {
+    j["reference_ms"] = watch.elapsedMs();
     const auto e = reference::compareWithReference(frame, blurred->pixels, *exact, profiles);
     j["image_rms"] = e.rms;
     j["relative_rms"] = e.relativeRms;

@@ -97,6 +97,12 @@ TEST(ScreenConvolution, ObjectsNeverMix) {
   ASSERT_TRUE(out);
   EXPECT_EQ((*out)[20 * 40 + 20].x, 0.0f);  // the dark object's first column stays dark
   EXPECT_GT((*out)[20 * 40 + 19].x, 0.3f);  // the bright one keeps its own light
+  // Splitting rows between threads changes nothing.
+  auto single = reference::convolveScreen(g.buffers(), profiles, 1);
+  auto three = reference::convolveScreen(g.buffers(), profiles, 3);
+  ASSERT_TRUE(single && three);
+  EXPECT_EQ(*single, *out);
+  EXPECT_EQ(*three, *out);
   // Bad input is an Error, not a crash.
   EXPECT_FALSE(reference::convolveScreen({40, 41, g.radiance, g.position}, profiles));
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <thread>
 
 namespace tissue::reference {
 namespace {
@@ -119,7 +120,8 @@ RadialProfile normalizedProfile(const RadialProfile& profile) {
   return out;
 }
 
-Result<std::vector<Float3>> convolveScreen(const ScreenBuffers& f, std::span<const RadialProfile> profiles) {
+Result<std::vector<Float3>> convolveScreen(const ScreenBuffers& f, std::span<const RadialProfile> profiles,
+                                           int threads) {
   const std::size_t n =
       static_cast<std::size_t>(std::max(f.width, 0)) * static_cast<std::size_t>(std::max(f.height, 0));
   if (n == 0 || f.radiance.size() != n || f.position.size() != n) {
@@ -140,52 +142,63 @@ Result<std::vector<Float3>> convolveScreen(const ScreenBuffers& f, std::span<con
     tables.emplace_back(p.empty() ? RadialProfile{{0.0f, 1.0f}, {Float3{}, Float3{}}} : p);
   const std::vector<Footprint> fp = footprints(f);
   std::vector<Float3> out(n);
-  for (int y = 0; y < f.height; ++y) {
-    for (int x = 0; x < f.width; ++x) {
-      const std::size_t p = static_cast<std::size_t>(y) * f.width + x;
-      const int id = static_cast<int>(std::lround(f.radiance[p].w));
-      if (id == 0) continue;
-      if (id >= static_cast<int>(profiles.size()) || profiles[static_cast<std::size_t>(id)].empty() ||
-          fp[p].area <= 0.0f) {
-        out[p] = xyz(f.radiance[p]);
-        continue;
-      }
-      const ProfileTable& R = tables[static_cast<std::size_t>(id)];
-      const Float3 xp = xyz(f.position[p]);
-      const int half = std::min(static_cast<int>(std::ceil(R.rMax() / std::sqrt(fp[p].area))) + 2, 256);
-      Float3 sum{};
-      for (int qy = std::max(0, y - half); qy <= std::min(f.height - 1, y + half); ++qy) {
-        for (int qx = std::max(0, x - half); qx <= std::min(f.width - 1, x + half); ++qx) {
-          const std::size_t q = static_cast<std::size_t>(qy) * f.width + qx;
-          if (std::lround(f.radiance[q].w) != id || fp[q].area <= 0.0f) continue;
-          Float3 w{};
-          if (q == p) {  // the own pixel: R over the disc of its area
-            w = profileIntegral(profiles[static_cast<std::size_t>(id)],
-                                std::sqrt(fp[p].area / std::numbers::pi_v<float>));
-          } else if (std::max(std::abs(qx - x), std::abs(qy - y)) <= 2) {  // near: 4 x 4 over the footprint
-            const Float3 xq = xyz(f.position[q]);
-            for (int j = 0; j < 4; ++j) {
-              for (int i = 0; i < 4; ++i) {
-                const float s = (static_cast<float>(i) + 0.5f) / 4.0f - 0.5f,
-                            t = (static_cast<float>(j) + 0.5f) / 4.0f - 0.5f;
-                const Float3 xs{xq.x + s * fp[q].dx.x + t * fp[q].dy.x,
-                                xq.y + s * fp[q].dx.y + t * fp[q].dy.y,
-                                xq.z + s * fp[q].dx.z + t * fp[q].dy.z};
-                const Float3 r = R(length(sub(xp, xs)));
-                const float a = fp[q].area / 16.0f;
-                w = {w.x + r.x * a, w.y + r.y * a, w.z + r.z * a};
-              }
-            }
-          } else {
-            const Float3 r = R(length(sub(xp, xyz(f.position[q]))));
-            w = {r.x * fp[q].area, r.y * fp[q].area, r.z * fp[q].area};
-          }
-          sum = {sum.x + w.x * f.radiance[q].x, sum.y + w.y * f.radiance[q].y, sum.z + w.z * f.radiance[q].z};
+  // Rows are independent: split them between threads (disjoint writes).
+  auto rows = [&](int y0, int y1) {
+    for (int y = y0; y < y1; ++y) {
+      for (int x = 0; x < f.width; ++x) {
+        const std::size_t p = static_cast<std::size_t>(y) * f.width + x;
+        const int id = static_cast<int>(std::lround(f.radiance[p].w));
+        if (id == 0) continue;
+        if (id >= static_cast<int>(profiles.size()) || profiles[static_cast<std::size_t>(id)].empty() ||
+            fp[p].area <= 0.0f) {
+          out[p] = xyz(f.radiance[p]);
+          continue;
         }
+        const ProfileTable& R = tables[static_cast<std::size_t>(id)];
+        const Float3 xp = xyz(f.position[p]);
+        const int half = std::min(static_cast<int>(std::ceil(R.rMax() / std::sqrt(fp[p].area))) + 2, 256);
+        Float3 sum{};
+        for (int qy = std::max(0, y - half); qy <= std::min(f.height - 1, y + half); ++qy) {
+          for (int qx = std::max(0, x - half); qx <= std::min(f.width - 1, x + half); ++qx) {
+            const std::size_t q = static_cast<std::size_t>(qy) * f.width + qx;
+            if (std::lround(f.radiance[q].w) != id || fp[q].area <= 0.0f) continue;
+            Float3 w{};
+            if (q == p) {  // the own pixel: R over the disc of its area
+              w = profileIntegral(profiles[static_cast<std::size_t>(id)],
+                                  std::sqrt(fp[p].area / std::numbers::pi_v<float>));
+            } else if (std::max(std::abs(qx - x), std::abs(qy - y)) <= 2) {  // near: 4 x 4 over the footprint
+              const Float3 xq = xyz(f.position[q]);
+              for (int j = 0; j < 4; ++j) {
+                for (int i = 0; i < 4; ++i) {
+                  const float s = (static_cast<float>(i) + 0.5f) / 4.0f - 0.5f,
+                              t = (static_cast<float>(j) + 0.5f) / 4.0f - 0.5f;
+                  const Float3 xs{xq.x + s * fp[q].dx.x + t * fp[q].dy.x,
+                                  xq.y + s * fp[q].dx.y + t * fp[q].dy.y,
+                                  xq.z + s * fp[q].dx.z + t * fp[q].dy.z};
+                  const Float3 r = R(length(sub(xp, xs)));
+                  const float a = fp[q].area / 16.0f;
+                  w = {w.x + r.x * a, w.y + r.y * a, w.z + r.z * a};
+                }
+              }
+            } else {
+              const Float3 r = R(length(sub(xp, xyz(f.position[q]))));
+              w = {r.x * fp[q].area, r.y * fp[q].area, r.z * fp[q].area};
+            }
+            sum = {sum.x + w.x * f.radiance[q].x, sum.y + w.y * f.radiance[q].y,
+                   sum.z + w.z * f.radiance[q].z};
+          }
+        }
+        out[p] = sum;
       }
-      out[p] = sum;
     }
-  }
+  };
+  const int workers = std::clamp(threads, 1, 64);
+  std::vector<std::thread> pool;
+  for (int t = 1; t < workers; ++t)
+    pool.emplace_back(rows, f.height * t / workers, f.height * (t + 1) / workers);
+  rows(0, f.height / workers);
+  for (std::thread& t : pool)
+    t.join();
   return out;
 }
 

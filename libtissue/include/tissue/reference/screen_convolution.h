@@ -44,9 +44,10 @@ struct ScreenBuffers {
 /// pixel integrates R over the disc of its footprint's area, pixels within 2 of p integrate
 /// over a 4 x 4 grid of their footprint, farther ones take R at the centre times the area.
 /// `profiles[id]` is object id's profile (an empty profile: the pixel is copied through).
-/// Returns RGB per pixel; pixels without an object are 0.
+/// Returns RGB per pixel; pixels without an object are 0. Rows are split between `threads`
+/// threads (the result does not depend on it).
 Result<std::vector<Float3>> convolveScreen(const ScreenBuffers& frame,
-                                           std::span<const RadialProfile> profiles);
+                                           std::span<const RadialProfile> profiles, int threads = 2);
 
 /// RMS difference between `actual` (RGB of a renderer's result, a ignored) and `reference`
 /// over the pixels whose id has a non-empty profile, all three channels.
