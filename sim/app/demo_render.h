@@ -24,6 +24,11 @@ class DemoRenderer {
   /// Renders the surface as it is now and writes `png` atomically.
   Result<void> render(const mesh::DeformableSurface& surface, const LayeredMaterial& material,
                       const std::filesystem::path& png);
+  /// Renders the surface as it is now with screen-space separable SSS (the material's dipole
+  /// profile, pre-integrated kernel, 17 taps), writes `png`, and reports the kernel, the pass
+  /// timings and the image RMS against the CPU reference; {"skipped": why} when it cannot.
+  nlohmann::json renderSeparable(const mesh::DeformableSurface& surface, const LayeredMaterial& material,
+                                 const std::filesystem::path& png);
   /// GL context and renderer strings, and the last frame's timings (ms).
   nlohmann::json info() const;
 

@@ -229,6 +229,12 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
     report["render"] = renderer.info();
     report["render"]["images"] = images;
   }
+
+  // The poked organ (the surface is in that state after the last renderFrame) in separable SSS.
+  report["render_separable"] =
+      renderer.renderSeparable(*d.surface, d.material, o.outDir / "frame_poked_separable.png");
+
+  // Inspection: the poked organ with its shading fields, for ParaView.
   if (auto vtp = writeInspection(*d.surface, o.outDir / "organ_poked.vtp"); !vtp) return vtp.error();
   report["inspection"] = "organ_poked.vtp";
 
