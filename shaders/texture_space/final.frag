@@ -22,15 +22,18 @@ uniform int u_output;  // 0: tone-mapped colour; 1: linear diffuse radiance (for
 
 out vec4 o_color;
 
+vec3 term(sampler2D map, int i) {
+  if (i >= u_gaussianCount) return vec3(0.0);
+  vec4 m = texture(map, v_mapCoord);
+  return u_weights[i] * (m.a > 1e-4 ? m.rgb / m.a : vec3(0.0));
+}
+
 void main() {
-  vec3 diffuse = vec3(0.0);
-  for (int i = 0; i < kMaxGaussians; ++i)
-    if (i < u_gaussianCount) {
-      // Maps are premultiplied by coverage: dividing by the filtered alpha keeps gutter texels
-      // out of the bilinear lookup, so chart seams do not darken.
-      vec4 m = texture(u_maps[i], v_mapCoord);
-      diffuse += u_weights[i] * (m.a > 1e-4 ? m.rgb / m.a : vec3(0.0));
-    }
+  // Sampler arrays take constant indices only (GLSL 3.30), hence one line per term. Maps are
+  // premultiplied by coverage: dividing by the filtered alpha keeps gutter texels out of the
+  // bilinear lookup, so chart seams do not darken.
+  vec3 diffuse = term(u_maps[0], 0) + term(u_maps[1], 1) + term(u_maps[2], 2) + term(u_maps[3], 3) +
+                 term(u_maps[4], 4) + term(u_maps[5], 5) + term(u_maps[6], 6) + term(u_maps[7], 7);
   vec3 albedo = srgbToLinear(texture(u_baseColor, v_uv).rgb);
   if (u_output == 1) {
     o_color = vec4(diffuse, 1.0);

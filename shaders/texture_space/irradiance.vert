@@ -12,6 +12,7 @@ uniform vec4 u_clipPlanes[6];    // eye-space frustum planes, Jimenez eq. 6 (Pi_
 uniform int u_clip;              // 1: clip against them (§5)
 uniform vec3 u_offset;           // mm, translation of this instance
 
+out float gl_ClipDistance[6];
 out vec3 v_worldPosition;
 out vec3 v_normal;
 out float v_eyeDot;  // cos of the angle between the normal and the direction to the eye
