@@ -7,6 +7,7 @@
 
 #include "deformations.h"
 #include "demo_render.h"
+#include "demo_texture_space.h"
 #include "material_file.h"
 #include "output.h"
 #include "tissue/core/atomic_file.h"
@@ -129,6 +130,9 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
   } else {
     report["render_skipped"] = img.error().message;
   }
+
+  report["texture_space"] =
+      renderTextureSpaceDemo(surface, o.outDir / "frame_poked_texture_space.png", o.width, o.height);
 
   // Inspection: the poked organ with its shading fields, for ParaView.
   if (auto vtp = writeInspection(surface, o.outDir / "organ_poked.vtp"); !vtp) return vtp.error();
