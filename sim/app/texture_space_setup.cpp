@@ -200,7 +200,8 @@ render::RadialProfileTable skinProfileTable(const std::vector<render::ProfileGau
 }
 
 Result<Image8> referenceImage(render::TextureSpaceRenderer& renderer, const render::Scene& scene, int width,
-                              int height, const render::RadialProfileTable& profile, float cutoffMm) {
+                              int height, const render::RadialProfileTable& profile, float cutoffMm,
+                              Float3 offsetMm) {
   auto maps = renderer.readIrradiance();
   if (!maps) return maps.error();
   if (maps->size != maps->maxSize) return Error{"the reference needs the full-size (unoptimised) map"};
@@ -221,7 +222,7 @@ Result<Image8> referenceImage(render::TextureSpaceRenderer& renderer, const rend
   render::FloatMap diffused{maps->size, maps->size, std::vector<Float4>(maps->irradiance.texels.size())};
   for (std::size_t i = 0; i < texel.size(); ++i)
     diffused.texels[texel[i]] = {m[i].x, m[i].y, m[i].z, 1.0f};
-  return renderer.renderWithDiffusedMap(scene, width, height, diffused);
+  return renderer.renderWithDiffusedMap(scene, width, height, diffused, offsetMm);
 }
 
 double imageRms(const Image8& a, const Image8& b) {

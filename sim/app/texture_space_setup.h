@@ -44,7 +44,8 @@ render::RadialProfileTable skinProfileTable(const std::vector<render::ProfileGau
 /// exact convolution over the surface of the frame's irradiance (read back) with `profile`,
 /// drawn through the same final pass. Call right after an unoptimised renderImage.
 Result<Image8> referenceImage(render::TextureSpaceRenderer& renderer, const render::Scene& scene, int width,
-                              int height, const render::RadialProfileTable& profile, float cutoffMm);
+                              int height, const render::RadialProfileTable& profile, float cutoffMm,
+                              Float3 offsetMm = {});
 
 /// Root-mean-square difference of the RGB channels, in 8-bit levels.
 double imageRms(const Image8& a, const Image8& b);

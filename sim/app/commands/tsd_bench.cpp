@@ -24,8 +24,9 @@ struct BenchOptions {
   int mapSize = 256;   // T_max, texels
   int gaussians = 6;
   int repeats = 3;
-  std::string chart;  // PNG of the speed-ups, optional
-  std::string image;  // PNG of one optimised frame (16 organs, second distance), optional
+  std::string chart;          // PNG of the speed-ups, optional
+  std::string image;          // PNG of one optimised frame (16 organs, second distance), optional
+  bool accuracyOnly = false;  // skip the speed-up table
 };
 
 constexpr int kObjects[] = {1, 2, 4, 8, 16};
@@ -62,6 +63,7 @@ int run(const BenchOptions& o, const GlobalOptions& global) {
   nlohmann::json speedup = nlohmann::json::array(), plainMs = nlohmann::json::array(),
                  optimisedMs = nlohmann::json::array();
   std::vector<inspect::ChartSeries> series;
+  nlohmann::json accuracy{{"rows", nlohmann::json::array()}};
   float referenceMm = 0.0f, size = 0.0f;
   Stopwatch total;
   {
@@ -81,6 +83,7 @@ int run(const BenchOptions& o, const GlobalOptions& global) {
     plain.gaussians = optimised.gaussians = *gaussians;
     plain.cull = plain.clip = plain.depthSize = false;
     for (int objects : kObjects) {
+      if (o.accuracyOnly) break;
       std::vector<Float3> offsets;
       for (int i = 0; i < objects; ++i)
         offsets.push_back(
@@ -109,10 +112,46 @@ int run(const BenchOptions& o, const GlobalOptions& global) {
       speedup.push_back(rowS), plainMs.push_back(rowP), optimisedMs.push_back(rowO);
       series.push_back(line);
     }
+    // Accuracy: one organ at the first distance, against the CPU reference convolution of the
+    // unoptimised frame's irradiance with the six-term skin profile (the material's own).
+    {
+      const render::Scene scene = benchScene({0, 0, 0}, kDistances[0] * size, size, width);
+      const std::vector<Float3> one = {{-centre.x, -centre.y, -centre.z}};
+      render::TextureSpaceSettings six = plain;
+      six.gaussians = *skinGaussians(6);
+      if (auto r = renderer->renderImage(scene, o.width, o.height, six, one); !r)
+        return fail(cmd, r.error().message);
+      float cutoff = 0.0f;
+      const auto table = skinProfileTable(six.gaussians, cutoff);
+      Stopwatch referenceWatch;
+      auto reference = referenceImage(*renderer, scene, o.width, o.height, table, cutoff, one[0]);
+      if (!reference) return fail(cmd, reference.error().message);
+      accuracy["reference_ms"] = referenceWatch.elapsedMs();
+      for (int n : {2, 4, 6}) {
+        auto g = skinGaussians(n);
+        if (!g) return fail(cmd, g.error().message);
+        for (bool on : {false, true}) {
+          render::TextureSpaceSettings s = on ? optimised : plain;
+          s.gaussians = *g;
+          std::vector<double> ms;
+          Result<Image8> image = Error{"not rendered"};
+          for (int rep = 0; rep <= o.repeats; ++rep) {
+            Stopwatch watch;
+            image = renderer->renderImage(scene, o.width, o.height, s, one);
+            if (!image) return fail(cmd, image.error().message);
+            if (rep > 0) ms.push_back(watch.elapsedMs());
+          }
+          accuracy["rows"].push_back({{"setting", std::to_string(n) + "-gaussians"},
+                                      {"optimised", on},
+                                      {"ms", median(ms)},
+                                      {"image_rms", imageRms(*image, *reference)}});
+        }
+      }
+    }
     referenceMm = renderer->referenceDistance(benchScene({}, size, size, width), o.height, optimised);
     glInfo = nlohmann::json{{"gl_renderer", (*context)->info().renderer}};
   }
-  if (!o.chart.empty()) {
+  if (!o.chart.empty() && !series.empty()) {
     const inspect::ChartSettings cs{"Texture-space diffusion: speed-up of the three optimisations (llvmpipe)",
                                     "camera distance to the middle organ (organ diagonals)",
                                     "speed-up (unoptimised ms / optimised ms)",
@@ -132,6 +171,7 @@ int run(const BenchOptions& o, const GlobalOptions& global) {
   out["speedup"] = speedup;
   out["unoptimised_ms"] = plainMs;
   out["optimised_ms"] = optimisedMs;
+  out["accuracy"] = accuracy;
   out["organ_size_mm"] = size;
   out["mesh"] = meshPath.string();
   out["atlas"] = organ->atlas;
@@ -164,6 +204,7 @@ void registerTsdBenchCommand(CLI::App& app, const GlobalOptions& global, int& ex
   cmd->add_option("--gaussians", opts->gaussians, "profile terms: 2, 4 or 6 (default 6)");
   cmd->add_option("--repeats", opts->repeats, "timed frames per cell and path (default 3; median)");
   cmd->add_option("--chart", opts->chart, "write the speed-ups as a line chart PNG");
+  cmd->add_flag("--accuracy-only", opts->accuracyOnly, "only the accuracy rows (no speed-up table)");
   cmd->add_option("--image", opts->image, "write the optimised frame of 16 organs at the second distance");
   cmd->callback([opts, &global, &exitCode] { exitCode = run(*opts, global); });
 }

@@ -76,9 +76,10 @@ class TextureSpaceRenderer {
   Result<Image8> renderImage(const Scene& scene, int width, int height, const TextureSpaceSettings& settings,
                              std::span<const Float3> instanceOffsetsMm = {});
   /// The same frame with a given diffused-irradiance map instead of the Gaussian chain (T_max^2
-  /// texels, premultiplied by coverage in a; the map of the unoptimised path, s = 1): the image
-  /// a reference convolution produces, for accuracy figures.
-  Result<Image8> renderWithDiffusedMap(const Scene& scene, int width, int height, const FloatMap& diffused);
+  /// texels, premultiplied by coverage in a; the map of the unoptimised path, s = 1), one instance
+  /// at `offsetMm`: the image a reference convolution produces, for accuracy figures.
+  Result<Image8> renderWithDiffusedMap(const Scene& scene, int width, int height, const FloatMap& diffused,
+                                       Float3 offsetMm = {});
   /// The irradiance pass of the last instance rendered, read back (for CPU references).
   Result<IrradianceReadback> readIrradiance();
   /// The diffused irradiance sum_i w_i map_i of the last instance (T x T texels, a = coverage).

@@ -31,7 +31,10 @@ struct SurfaceSamples {
 Float3 evaluateProfile(const RadialProfileTable& table, float rMm);
 
 /// M(x_o) = sum_i R(|x_i - x_o|) E_i A_i for each query point (mm), over the samples within
-/// `cutoffMm` (a uniform grid of that cell size finds them).
+/// `cutoffMm` (a uniform grid of that cell size finds them). Each sample stands for a disk of
+/// area A_i, so R is averaged over the annulus that disk sweeps at distance |x_i - x_o| (from
+/// the cumulative profile): the narrowest skin Gaussians (sigma 0.08 mm) are far below a texel,
+/// and a point value of R would count their energy wrongly.
 std::vector<Float3> convolveOverSurface(const SurfaceSamples& samples, std::span<const Float3> queriesMm,
                                         const RadialProfileTable& profile, float cutoffMm);
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <unordered_map>
 
 namespace tissue::render {
@@ -18,6 +19,36 @@ Float3 evaluateProfile(const RadialProfileTable& table, float rMm) {
   const Float3 a = table.value[lo], b = table.value[hi];
   return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.z + t * (b.z - a.z)};
 }
+
+namespace {
+
+/// P(r) = integral_0^r 2 pi t R(t) dt per channel at the table's radii (trapezoids).
+std::vector<Float3> cumulativeProfile(const RadialProfileTable& table) {
+  std::vector<Float3> p(table.radiusMm.size());
+  double acc[3] = {0.0, 0.0, 0.0};
+  for (std::size_t k = 1; k < p.size(); ++k) {
+    const double r0 = double(table.radiusMm[k - 1]), r1 = double(table.radiusMm[k]);
+    const Float3 a = table.value[k - 1], b = table.value[k];
+    const double f = std::numbers::pi * (r1 - r0);
+    acc[0] += f * (r0 * double(a.x) + r1 * double(b.x));
+    acc[1] += f * (r0 * double(a.y) + r1 * double(b.y));
+    acc[2] += f * (r0 * double(a.z) + r1 * double(b.z));
+    p[k] = {float(acc[0]), float(acc[1]), float(acc[2])};
+  }
+  return p;
+}
+
+Float3 lookup(const std::vector<float>& r, const std::vector<Float3>& v, double x) {
+  if (r.empty() || x <= double(r.front())) return v.empty() ? Float3{} : v.front();
+  if (x >= double(r.back())) return v.back();
+  const auto hi = std::size_t(std::upper_bound(r.begin(), r.end(), float(x)) - r.begin());
+  const std::size_t lo = hi - 1;
+  const float t = float((x - double(r[lo])) / double(r[hi] - r[lo]));
+  return {v[lo].x + t * (v[hi].x - v[lo].x), v[lo].y + t * (v[hi].y - v[lo].y),
+          v[lo].z + t * (v[hi].z - v[lo].z)};
+}
+
+}  // namespace
 
 std::vector<Float3> convolveOverSurface(const SurfaceSamples& samples, std::span<const Float3> queriesMm,
                                         const RadialProfileTable& profile, float cutoffMm) {
@@ -35,6 +66,7 @@ std::vector<Float3> convolveOverSurface(const SurfaceSamples& samples, std::span
   for (std::uint32_t i = 0; i < samples.positionMm.size(); ++i)
     grid[key(samples.positionMm[i], 0, 0, 0)].push_back(i);
   // Step 2: for each query, the 27 neighbouring cells.
+  const std::vector<Float3> cumulative = cumulativeProfile(profile);
   std::vector<Float3> out(queriesMm.size());
   const double cutoff2 = double(cutoffMm) * double(cutoffMm);
   for (std::size_t q = 0; q < queriesMm.size(); ++q) {
@@ -50,7 +82,17 @@ std::vector<Float3> convolveOverSurface(const SurfaceSamples& samples, std::span
             const double ex = double(xi.x - xo.x), ey = double(xi.y - xo.y), ez = double(xi.z - xo.z);
             const double d2 = ex * ex + ey * ey + ez * ez;
             if (d2 > cutoff2) continue;
-            const Float3 r = evaluateProfile(profile, float(std::sqrt(d2)));
+            // R averaged over the annulus [d - rho, d + rho] the sample's disk (radius rho,
+            // area A) sweeps: texels are wider than the narrowest Gaussians, so a point value
+            // would over- or under-count their energy; the average keeps it exact.
+            const double d = std::sqrt(d2), rho = std::sqrt(double(samples.areaMm2[i]) / std::numbers::pi);
+            const double inner = std::max(d - rho, 0.0), outer = d + rho;
+            const Float3 pin = lookup(profile.radiusMm, cumulative, inner);
+            const Float3 pout = lookup(profile.radiusMm, cumulative, outer);
+            const double ring = std::numbers::pi * (outer * outer - inner * inner);
+            const Float3 r{float((double(pout.x) - double(pin.x)) / ring),
+                           float((double(pout.y) - double(pin.y)) / ring),
+                           float((double(pout.z) - double(pin.z)) / ring)};
             const Float3 e = samples.irradiance[i];
             const double a = double(samples.areaMm2[i]);
             sum[0] += double(r.x) * double(e.x) * a, sum[1] += double(r.y) * double(e.y) * a,

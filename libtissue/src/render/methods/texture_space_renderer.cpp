@@ -225,7 +225,7 @@ Result<Image8> TextureSpaceRenderer::renderImage(const Scene& scene, int width, 
 }
 
 Result<Image8> TextureSpaceRenderer::renderWithDiffusedMap(const Scene& scene, int width, int height,
-                                                           const FloatMap& diffused) {
+                                                           const FloatMap& diffused, Float3 offsetMm) {
   Impl& s = *m_impl;
   const gl::GlApi& g = s.gl();
   const int maxSize = s.tsd.irradianceMap().maxSize();
@@ -241,7 +241,7 @@ Result<Image8> TextureSpaceRenderer::renderWithDiffusedMap(const Scene& scene, i
   const float aspect = float(width) / float(height);
   s.clearTarget(scene);
   FinalMaps maps{{s.referenceMap.id()}, {Float3{1.0f, 1.0f, 1.0f}}, 1.0f};
-  const IrradianceFrame frame = s.frameOf(scene, aspect, Float3{});
+  const IrradianceFrame frame = s.frameOf(scene, aspect, offsetMm);
   if (auto r =
           s.tsd.drawFinal(s.mesh.vertexArray(), s.mesh.indexCount(), frame, s.surfaceOf(scene, aspect), maps);
       !r)
