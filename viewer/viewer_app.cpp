@@ -56,7 +56,7 @@ void updateScene(Session& s) {
   const Float3 right = normalize(cross(forward, s.scene.camera.up));
   const Float3 up = cross(right, forward);
   const float d = s.orbit->distanceMm();
-  s.scene.light.positionMm = s.scene.camera.eye + right * (0.5f * d) + up * (0.7f * d);
+  s.scene.lights[0].positionMm = s.scene.camera.eye + right * (0.5f * d) + up * (0.7f * d);
 }
 
 /// Creates the renderer on the window's context and uploads the organ and its textures.
@@ -72,7 +72,7 @@ Result<void> setUpRendering(Session& s) {
   if (s.organ.normalMap)
     if (auto ok = s.renderer->setNormalMap(*s.organ.normalMap); !ok) return ok;
   return s.renderer->setMesh(
-      {surface.positions(), surface.normals(), surface.tangents(), surface.uvs(), surface.triangles()});
+      {surface.positions(), surface.normals(), surface.tangents(), surface.uvs(), surface.triangles(), {}});
 }
 
 /// Right button down at (`x`, `y`) window pixels: the instrument touches the nearest surface

@@ -10,3 +10,15 @@ vec3 blinnPhong(vec3 N, vec3 L, vec3 V, vec3 albedo, float specular, float shini
   float lobe = (shininess + 8.0) / (8.0 * 3.14159265) * pow(NdotH, shininess);
   return (albedo / 3.14159265 + vec3(specular * lobe)) * NdotL * 3.14159265;
 }
+
+// The two halves of blinnPhong(), for methods that treat diffuse and specular apart
+// (separable SSS blurs only the diffuse): Lambert diffuse times cos(theta), and the lobe.
+vec3 lambertDiffuse(vec3 N, vec3 L, vec3 albedo) { return albedo * max(dot(N, L), 0.0); }
+
+float blinnPhongSpecular(vec3 N, vec3 L, vec3 V, float specular, float shininess) {
+  float NdotL = max(dot(N, L), 0.0);
+  if (NdotL <= 0.0) return 0.0;
+  vec3 H = normalize(L + V);
+  float lobe = (shininess + 8.0) / (8.0 * 3.14159265) * pow(max(dot(N, H), 0.0), shininess);
+  return specular * lobe * NdotL * 3.14159265;
+}

@@ -80,8 +80,8 @@ nlohmann::json renderTextureSpaceDemo(const mesh::DeformableSurface& surface,
   for (const Float3& p : arrays->positions)
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)},
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  const render::MeshArrays mesh{arrays->positions, arrays->normals, arrays->tangents, arrays->uvs,
-                                arrays->triangles};
+  const render::MeshArrays mesh{arrays->positions, arrays->normals,   arrays->tangents,
+                                arrays->uvs,       arrays->triangles, {}};
   if (auto r = renderer->setMesh(mesh, float(std::sqrt(uv / area)) * kMapSize); !r)
     return {{"skipped", r.error().message}};
   if (const auto base = findDataTexture("liver", "base_color"); !arrays->atlas && !base.empty())
@@ -90,8 +90,8 @@ nlohmann::json renderTextureSpaceDemo(const mesh::DeformableSurface& surface,
   render::Scene scene;
   scene.camera = render::frameBoundingBox(lo, hi, float(width) / float(height));
   const Float3 e = scene.camera.eye;
-  scene.light.positionMm = {e.x + 0.5f * (hi.x - lo.x), e.y + (hi.y - lo.y), e.z};
-  render::TextureSpaceSettings settings;
+  scene.lights[0].positionMm = {e.x + 0.5f * (hi.x - lo.x), e.y + (hi.y - lo.y), e.z};
+  render::TsdSettings settings;
   settings.gaussians = *gaussians;
   Stopwatch watch;
   auto image = renderer->renderImage(scene, width, height, settings);

@@ -13,6 +13,7 @@
 #include "tissue/mesh/tangent_frames.h"
 #include "tissue/mesh/uv_atlas.h"
 #include "tissue/mesh/vertex_normals.h"
+#include "tissue/optics/kernel_gaussians.h"
 
 namespace tissue::sim_app {
 namespace {
@@ -33,70 +34,6 @@ double triangleArea(Float3 a, Float3 b, Float3 c) {
   const double ex = double(b.x - a.x), ey = double(b.y - a.y), ez = double(b.z - a.z);
   const double fx = double(c.x - a.x), fy = double(c.y - a.y), fz = double(c.z - a.z);
   return 0.5 * std::hypot(ey * fz - ez * fy, ez * fx - ex * fz, ex * fy - ey * fx);
-}
-
-/// Solves the small symmetric system a x = b (n <= 6) by Gaussian elimination.
-std::vector<double> solve(std::vector<std::vector<double>> a, std::vector<double> b) {
-  const std::size_t n = b.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const double p = std::abs(a[k][k]) > 1e-300 ? a[k][k] : 1e-300;
-    for (std::size_t i = k + 1; i < n; ++i) {
-      const double f = a[i][k] / p;
-      for (std::size_t j = k; j < n; ++j)
-        a[i][j] -= f * a[k][j];
-      b[i] -= f * b[k];
-    }
-  }
-  std::vector<double> x(n);
-  for (std::size_t k = n; k-- > 0;) {
-    double s = b[k];
-    for (std::size_t j = k + 1; j < n; ++j)
-      s -= a[k][j] * x[j];
-    x[k] = s / (std::abs(a[k][k]) > 1e-300 ? a[k][k] : 1e-300);
-  }
-  return x;
-}
-
-/// Non-negative weights of Gaussians of `variances` fitting `target` (one channel) in the sense
-/// of Jimenez et al. eq. 2 (r-weighted squared error), by an active set; returns the error.
-double fitChannel(const std::vector<double>& variances, const std::vector<double>& r,
-                  const std::vector<double>& target, std::vector<double>& weights) {
-  const auto g = [](double v, double x) {
-    return std::exp(-x * x / (2.0 * v)) / (2.0 * std::numbers::pi * v);
-  };
-  std::vector<bool> active(variances.size(), true);
-  for (int round = 0; round < 8; ++round) {
-    std::vector<std::size_t> idx;
-    for (std::size_t i = 0; i < variances.size(); ++i)
-      if (active[i]) idx.push_back(i);
-    std::vector<std::vector<double>> a(idx.size(), std::vector<double>(idx.size(), 0.0));
-    std::vector<double> b(idx.size(), 0.0);
-    for (std::size_t s = 0; s < r.size(); ++s)
-      for (std::size_t i = 0; i < idx.size(); ++i) {
-        const double gi = g(variances[idx[i]], r[s]);
-        b[i] += r[s] * gi * target[s];
-        for (std::size_t j = 0; j < idx.size(); ++j)
-          a[i][j] += r[s] * gi * g(variances[idx[j]], r[s]);
-      }
-    const auto x = idx.empty() ? std::vector<double>{} : solve(a, b);
-    weights.assign(variances.size(), 0.0);
-    bool negative = false;
-    for (std::size_t i = 0; i < idx.size(); ++i) {
-      weights[idx[i]] = x[i];
-      if (x[i] < 0.0) active[idx[i]] = false, negative = true;
-    }
-    if (!negative) break;
-  }
-  for (double& w : weights)
-    w = std::max(w, 0.0);
-  double error = 0.0;
-  for (std::size_t s = 0; s < r.size(); ++s) {
-    double fit = 0.0;
-    for (std::size_t i = 0; i < variances.size(); ++i)
-      fit += weights[i] * g(variances[i], r[s]);
-    error += r[s] * (fit - target[s]) * (fit - target[s]);
-  }
-  return error;
 }
 
 }  // namespace
@@ -157,31 +94,23 @@ Result<std::vector<render::ProfileGaussian>> skinGaussians(int count) {
   if (six.size() != 6) return Error{path.string() + ": expected 6 Gaussians"};
   if (count == 6) return six;
   if (count != 2 && count != 4) return Error{"--gaussians must be 2, 4 or 6"};
-  // Step 2: fewer terms, variances a subset of the six (shared by the channels, as d'Eon's),
-  // weights per channel by non-negative least squares of eq. 2; the best subset wins.
-  std::vector<double> r, target[3];
-  for (int i = 0; i < 2000; ++i) {
-    r.push_back(0.005 * (i + 0.5));
-    const Float3 v = render::evaluateGaussianSum(six, float(r.back()));
-    target[0].push_back(double(v.x)), target[1].push_back(double(v.y)), target[2].push_back(double(v.z));
+  // Step 2: fewer terms fitted to the six-term profile by optics::fitGaussians (branch
+  // kernels: Nelder-Mead over the shared variances, non-negative weights per channel).
+  optics::RadialProfileRgb profile;
+  profile.name = "d'Eon skin";
+  for (int i = 0; i <= 4000; ++i) {
+    const double r = 0.005 * i;
+    const Float3 v = render::evaluateGaussianSum(six, float(r));
+    profile.radiusMm.push_back(r);
+    profile.value[0].push_back(double(v.x)), profile.value[1].push_back(double(v.y));
+    profile.value[2].push_back(double(v.z));
   }
-  double best = 1e300;
+  auto sum = optics::fitGaussians(profile, count);
+  if (!sum) return sum.error();
   std::vector<render::ProfileGaussian> fit;
-  for (int mask = 0; mask < 64; ++mask) {
-    if (__builtin_popcount(unsigned(mask)) != count) continue;
-    std::vector<double> variances;
-    for (int i = 0; i < 6; ++i)
-      if (mask & (1 << i)) variances.push_back(double(six[std::size_t(i)].varianceMm2));
-    std::vector<double> w[3];
-    double error = 0.0;
-    for (int c = 0; c < 3; ++c)
-      error += fitChannel(variances, r, target[c], w[c]);
-    if (error >= best) continue;
-    best = error;
-    fit.clear();
-    for (std::size_t i = 0; i < variances.size(); ++i)
-      fit.push_back({float(variances[i]), {float(w[0][i]), float(w[1][i]), float(w[2][i])}});
-  }
+  for (std::size_t i = 0; i < sum->varianceMm2.size(); ++i)
+    fit.push_back({float(sum->varianceMm2[i]),
+                   {float(sum->weights[0][i]), float(sum->weights[1][i]), float(sum->weights[2][i])}});
   return fit;
 }
 

@@ -25,16 +25,18 @@ struct TsdOrgan {
   std::size_t charts = 0;  ///< atlas charts (0 with the file's UVs)
   float uvDensity = 0.0f;  ///< sqrt(UV area / surface area), UV units per mm
   Float3 lo, hi;           ///< bounds, mm
-  render::MeshArrays arrays() const { return {mesh.positions, normals, tangents, mesh.uvs, mesh.triangles}; }
+  render::MeshArrays arrays() const {
+    return {mesh.positions, normals, tangents, mesh.uvs, mesh.triangles, {}};
+  }
 };
 
 /// Loads a mesh (mm per file unit `scale`) and gives it usable UVs: its own when present and
 /// free of overlaps, else mesh::computeUvAtlas on its welded surface.
 Result<TsdOrgan> loadTsdOrgan(const std::filesystem::path& path, float scale);
 
-/// The first `count` of d'Eon & Luebke's six skin Gaussians refitted to `count` terms (2, 4 or
-/// 6), from ../shared/reference/deon_skin_gaussians.tsv. The 6 are the file's; fewer are a
-/// least-squares fit of eq. 2 of Jimenez et al. to the six-term profile.
+/// d'Eon & Luebke's skin profile as `count` Gaussians (2, 4 or 6), from
+/// ../shared/reference/deon_skin_gaussians.tsv: the file's six, or fewer fitted to the six-term
+/// profile by optics::fitGaussians (Jimenez et al. eq. 2).
 Result<std::vector<render::ProfileGaussian>> skinGaussians(int count);
 
 /// The six-term skin profile sampled for the CPU reference, and its cutoff radius (mm).

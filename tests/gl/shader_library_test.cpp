@@ -26,7 +26,7 @@ void writeFile(const std::filesystem::path& path, const std::string& text) {
 }
 
 TEST(ShaderLibraryTest, EmbedsTheShaderFolder) {
-  auto lit = embeddedOnly().source("lit.frag");
+  auto lit = embeddedOnly().source("lit/lit.frag");
   ASSERT_TRUE(lit) << lit.error().message;
   EXPECT_EQ(lit->rfind("#version 330 core", 0), 0u);
   EXPECT_TRUE(embeddedOnly().source("common/tonemap.glsl"));
@@ -37,7 +37,7 @@ TEST(ShaderLibraryTest, EmbedsTheShaderFolder) {
 
 TEST(ShaderLibraryTest, InjectsDefinesRightAfterVersionAndResolvesIncludes) {
   const gl::ShaderDefine defines[] = {{"TISSUE_NORMAL_MAP", "1"}, {"TISSUE_TEST_FLAG", ""}};
-  auto shader = embeddedOnly().preprocess("lit.frag", defines);
+  auto shader = embeddedOnly().preprocess("lit/lit.frag", defines);
   ASSERT_TRUE(shader) << shader.error().message;
   const std::string& s = shader->source;
   EXPECT_EQ(s.rfind("#version 330 core\n#define TISSUE_NORMAL_MAP 1\n#define TISSUE_TEST_FLAG \n", 0), 0u)
@@ -45,9 +45,10 @@ TEST(ShaderLibraryTest, InjectsDefinesRightAfterVersionAndResolvesIncludes) {
   EXPECT_EQ(s.find("#include"), std::string::npos);
   EXPECT_NE(s.find("vec3 perturbNormal("), std::string::npos);
   EXPECT_NE(s.find("vec3 tonemapReinhard("), std::string::npos);
-  ASSERT_EQ(shader->files.size(), 4u);
-  EXPECT_EQ(shader->files[0], "lit.frag");
-  EXPECT_EQ(shader->files[1], "common/normal_mapping.glsl");
+  ASSERT_EQ(shader->files.size(), 7u);
+  EXPECT_EQ(shader->files[0], "lit/lit.frag");
+  EXPECT_EQ(shader->files[1], "common/surface.glsl");
+  EXPECT_EQ(shader->files[2], "common/normal_mapping.glsl");
 }
 
 TEST(ShaderLibraryTest, OverrideFolderWinsAndIncludesOnce) {
@@ -62,7 +63,7 @@ TEST(ShaderLibraryTest, OverrideFolderWinsAndIncludesOnce) {
   EXPECT_NE(s.find("float a()"), std::string::npos);
   EXPECT_EQ(s.find("float a()"), s.rfind("float a()")) << "included twice:\n" << s;
   // Files the override folder lacks still come from the embedded copy.
-  EXPECT_TRUE(library.source("lit.vert"));
+  EXPECT_TRUE(library.source("common/surface.vert"));
 }
 
 TEST(ShaderLibraryTest, MissingIncludeNamesFileAndLine) {
@@ -89,8 +90,8 @@ TEST_P(ShaderCompileTest, EmbeddedVariantsCompile) {
   auto gl = gl::loadGl(context->procAddressFunction());
   ASSERT_TRUE(gl) << gl.error().message;
   const gl::ShaderDefine mapped[] = {{"TISSUE_NORMAL_MAP", "1"}};
-  EXPECT_TRUE(gl::buildProgram(**gl, embeddedOnly(), {"lit.vert", "lit.frag", {}}));
-  auto program = gl::buildProgram(**gl, embeddedOnly(), {"lit.vert", "lit.frag", mapped});
+  EXPECT_TRUE(gl::buildProgram(**gl, embeddedOnly(), {"common/surface.vert", "lit/lit.frag", {}}));
+  auto program = gl::buildProgram(**gl, embeddedOnly(), {"common/surface.vert", "lit/lit.frag", mapped});
   ASSERT_TRUE(program) << program.error().message;
   EXPECT_TRUE(program->owned());
 }
@@ -104,7 +105,7 @@ TEST_P(ShaderCompileTest, BrokenShaderGivesErrorWithFileNameAndLog) {
             "#version 330 core\n#include \"common/tonemap.glsl\"\nout vec4 c;\nvoid main() { c = "
             "undefinedThing; }\n");
   const gl::ShaderLibrary library({.overrideDir = dir, .useEnvironment = false});
-  auto program = gl::buildProgram(**gl, library, {"lit.vert", "broken.frag", {}});
+  auto program = gl::buildProgram(**gl, library, {"common/surface.vert", "broken.frag", {}});
   ASSERT_FALSE(program);
   const std::string& message = program.error().message;
   EXPECT_NE(message.find("broken.frag"), std::string::npos) << message;

@@ -61,6 +61,28 @@ SphereMesh makeSphere(float radiusMm, int rings, int segments) {
   return m;
 }
 
+SphereMesh makePatch(float sizeMm, int cells, float zMm) {
+  SphereMesh m;
+  for (int i = 0; i <= cells; ++i) {
+    for (int j = 0; j <= cells; ++j) {
+      const float u = static_cast<float>(j) / static_cast<float>(cells);
+      const float v = static_cast<float>(i) / static_cast<float>(cells);
+      m.positions.push_back({(u - 0.5f) * sizeMm, (v - 0.5f) * sizeMm, zMm});
+      m.normals.push_back({0.0f, 0.0f, 1.0f});
+      m.tangents.push_back({1.0f, 0.0f, 0.0f, 1.0f});
+      m.uvs.push_back({u, v});
+    }
+  }
+  const auto index = [&](int i, int j) { return static_cast<std::uint32_t>(i * (cells + 1) + j); };
+  for (int i = 0; i < cells; ++i) {
+    for (int j = 0; j < cells; ++j) {
+      m.triangles.push_back({index(i, j), index(i, j + 1), index(i + 1, j + 1)});
+      m.triangles.push_back({index(i, j), index(i + 1, j + 1), index(i + 1, j)});
+    }
+  }
+  return m;
+}
+
 Image8 makeBumpyNormalMap(int size) {
   return normalMapFromHeight(size, 0.008f, [](float u, float v) {
     return std::sin(2.0f * kPi * 8.0f * u) * std::sin(2.0f * kPi * 5.0f * v) +
@@ -94,7 +116,7 @@ render::Scene goldenScene() {
   scene.camera.verticalFovDeg = 40.0f;
   scene.camera.nearMm = 10.0f;
   scene.camera.farMm = 400.0f;
-  scene.light.positionMm = {120.0f, 140.0f, 160.0f};
+  scene.lights[0].positionMm = {120.0f, 140.0f, 160.0f};
   scene.material.specular = 0.2f;
   scene.material.shininess = 40.0f;
   return scene;

@@ -14,11 +14,15 @@ struct SphereMesh {
   std::vector<Float4> tangents;
   std::vector<Float2> uvs;
   std::vector<Triangle> triangles;
-  render::MeshArrays arrays() const { return {positions, normals, tangents, uvs, triangles}; }
+  render::MeshArrays arrays() const { return {positions, normals, tangents, uvs, triangles, {}}; }
 };
 
 /// `rings` latitude bands, `segments` longitude bands (a seam column is duplicated).
 SphereMesh makeSphere(float radiusMm, int rings, int segments);
+
+/// A flat square patch of side `sizeMm` centred on (0, 0, zMm), facing +z, `cells` quads a side;
+/// u along +x, v along +y.
+SphereMesh makePatch(float sizeMm, int cells, float zMm);
 
 /// A bumpy tangent-space normal map: height sin(2 pi 8 u) sin(2 pi 5 v) + ridges along u, so its
 /// gradient has components along both u and v (so the handedness w matters).

@@ -13,7 +13,7 @@ namespace tissue::test {
 namespace {
 
 using render::TextureSpaceRenderer;
-using render::TextureSpaceSettings;
+using render::TsdSettings;
 
 constexpr int kMapSize = 512;
 
@@ -58,8 +58,8 @@ SphereMesh makePatch(int n, float sx, float sy, float stretchX = 1.0f) {
   return m;
 }
 
-TextureSpaceSettings settings(bool optimised) {
-  TextureSpaceSettings s;
+TsdSettings settings(bool optimised) {
+  TsdSettings s;
   s.gaussians = deonSkin();
   s.cull = s.clip = s.depthSize = optimised;
   return s;
@@ -99,7 +99,7 @@ TEST_F(TextureSpaceTest, SphereMatchesGoldenAndOptimisationsStayClose) {
   // 1 level and under 1% of pixels off by more than 8 levels (the culled border and the smaller
   // map move the diffusion a little at silhouettes).
   for (int which = 0; which < 4; ++which) {
-    TextureSpaceSettings s = settings(false);
+    TsdSettings s = settings(false);
     s.cull = which == 0 || which == 3;
     s.clip = which == 1 || which == 3;
     s.depthSize = which == 2 || which == 3;
@@ -116,8 +116,8 @@ TEST_F(TextureSpaceTest, UniformlyLitPatchKeepsItsMeanBrightness) {
   ASSERT_TRUE(m_renderer->setMesh(patch.arrays(), 0.96f * kMapSize / 60.0f));
   render::Scene scene = goldenScene();
   scene.camera.eye = {0.0f, 0.0f, 150.0f};
-  scene.light.positionMm = {0.0f, 0.0f, 1e6f};  // N.L = 1 everywhere: uniform irradiance
-  TextureSpaceSettings s = settings(false);
+  scene.lights[0].positionMm = {0.0f, 0.0f, 1e6f};  // N.L = 1 everywhere: uniform irradiance
+  TsdSettings s = settings(false);
   ASSERT_TRUE(m_renderer->renderImage(scene, 64, 64, s));
   auto irradiance = m_renderer->readIrradiance();
   auto diffused = m_renderer->readDiffused(s);
@@ -164,7 +164,7 @@ TEST_F(TextureSpaceTest, DepthSizeCullAndClipOnKnownGeometry) {
   scene.camera.eye = {0.0f, 0.0f, 400.0f};
   scene.camera.farMm = 1000.0f;
   // Depth-based size: eq. 3-4 with d to the nearest corner of [-40, 40]^3 from (0, 0, 400).
-  TextureSpaceSettings s = settings(false);
+  TsdSettings s = settings(false);
   s.depthSize = true;
   ASSERT_TRUE(m_renderer->renderImage(scene, 200, 200, s));
   auto maps = m_renderer->readIrradiance();

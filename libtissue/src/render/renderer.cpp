@@ -1,145 +1,34 @@
-// The renderer core: one lit pass (Blinn-Phong through a tangent-space normal map) into the
-// offscreen target or a host framebuffer, each pass timed on the CPU and with GL timer queries.
+// The renderer: creation, GPU resources by handle, the single-mesh API, and the two ways to
+// render a frame (offscreen and read back, or into a host framebuffer). The frame itself is
+// in frame.cpp.
 #include "tissue/render/renderer.h"
 
-#include <glm/gtc/type_ptr.hpp>
-
-#include "camera_math.h"
-#include "mesh_buffers.h"
-#include "offscreen_target.h"
+#include "renderer_impl.h"
 #include "state_guard.h"
 #include "textures.h"
 #include "tissue/core/stopwatch.h"
-#include "tissue/gl/program.h"
 
 namespace tissue::render {
 namespace {
 
-// Tissue-like default base colour (sRGB) and a flat normal (0, 0, 1) as RGB.
+// Tissue-like default base colour (sRGB).
 constexpr std::uint8_t kDefaultBase[3] = {196, 112, 104};
-constexpr std::uint8_t kFlatNormal[3] = {128, 128, 255};
 
-// A GL_TIME_ELAPSED query around one pass; finishMs() waits for the GPU. A result longer than
-// the wall-clock time since the begin is impossible and reported as -1: llvmpipe (Mesa 22.3)
-// returns the time since boot for the first query on a newly created framebuffer.
-class PassTimer {
- public:
-  PassTimer(const gl::GlApi& gl, const gl::Query& query, bool enabled)
-      : m_gl(gl), m_query(query), m_on(enabled) {
-    if (m_on) m_gl.BeginQuery(GL_TIME_ELAPSED, m_query.id());
-  }
-  double finishMs() {
-    if (!m_on) return -1.0;
-    m_gl.EndQuery(GL_TIME_ELAPSED);
-    m_on = false;
-    GLuint64 ns = 0;
-    m_gl.GetQueryObjectui64v(m_query.id(), GL_QUERY_RESULT, &ns);
-    const double ms = static_cast<double>(ns) * 1e-6;
-    return ms <= m_wall.elapsedMs() ? ms : -1.0;
-  }
-  ~PassTimer() {
-    if (m_on) m_gl.EndQuery(GL_TIME_ELAPSED);
-  }
-
- private:
-  const gl::GlApi& m_gl;
-  const gl::Query& m_query;
-  bool m_on;
-  Stopwatch m_wall;
-};
-
-// Uniform locations of one lit-program variant.
-struct LitProgram {
-  gl::Program program;
-  GLint viewProjection = -1, cameraPosition = -1, lightPosition = -1, lightRadiance = -1, ambient = -1,
-        specular = -1, shininess = -1, exposure = -1;
-};
-
-Result<LitProgram> buildLit(const gl::GlApi& gl, const gl::ShaderLibrary& library, bool normalMap) {
-  const gl::ShaderDefine defines[] = {{"TISSUE_NORMAL_MAP", "1"}};
-  auto program = gl::buildProgram(
-      gl, library,
-      {"lit.vert", "lit.frag", normalMap ? std::span(defines) : std::span<const gl::ShaderDefine>()});
-  if (!program) return program.error();
-  LitProgram lit;
-  lit.program = std::move(*program);
-  const GLuint id = lit.program.id();
-  lit.viewProjection = gl.GetUniformLocation(id, "u_viewProjection");
-  lit.cameraPosition = gl.GetUniformLocation(id, "u_cameraPosition");
-  lit.lightPosition = gl.GetUniformLocation(id, "u_lightPosition");
-  lit.lightRadiance = gl.GetUniformLocation(id, "u_lightRadiance");
-  lit.ambient = gl.GetUniformLocation(id, "u_ambient");
-  lit.specular = gl.GetUniformLocation(id, "u_specular");
-  lit.shininess = gl.GetUniformLocation(id, "u_shininess");
-  lit.exposure = gl.GetUniformLocation(id, "u_exposure");
-  // Samplers never change: base colour on unit 0, normal map on unit 1.
-  gl.UseProgram(id);
-  gl.Uniform1i(gl.GetUniformLocation(id, "u_baseColor"), 0);
-  gl.Uniform1i(gl.GetUniformLocation(id, "u_normalMap"), 1);
-  return lit;
+template <class M>
+Result<void> createMethod(M& method, const gl::GlApi& g, const gl::ShaderLibrary& library) {
+  auto m = M::create(g, library);
+  if (!m) return m.error();
+  method = std::move(*m);
+  return {};
 }
 
 }  // namespace
 
-struct Renderer::Impl {
-  std::shared_ptr<const gl::GlApi> api;
-  RendererSettings settings;
-  LitProgram litFlat, litMapped;
-  MeshBuffers mesh;
-  gl::Texture baseColor, normalMap;
-  bool normalMapping = false;
-  OffscreenTarget offscreen;
-  gl::Query drawQuery, resolveQuery;
-  RenderTimings timings;
-
-  const gl::GlApi& gl() const { return *api; }
-
-  // The lit pass into whatever framebuffer and viewport are bound (state set, not restored).
-  Result<void> drawLit(const Scene& scene, int width, int height, bool clear) {
-    const gl::GlApi& g = gl();
-    if (mesh.empty()) return Error{"renderer: no mesh; call setMesh first"};
-    const LitProgram& lit = normalMapping ? litMapped : litFlat;
-    g.Disable(GL_BLEND);
-    g.Disable(GL_SCISSOR_TEST);
-    g.Disable(GL_FRAMEBUFFER_SRGB);  // the shader encodes sRGB itself
-    g.Enable(GL_DEPTH_TEST);
-    g.DepthFunc(GL_LESS);
-    g.DepthMask(GL_TRUE);
-    g.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    g.Enable(GL_CULL_FACE);
-    g.CullFace(GL_BACK);
-    g.FrontFace(GL_CCW);
-    if (settings.samples > 1) g.Enable(GL_MULTISAMPLE);
-    if (clear) {
-      g.ClearColor(scene.background.x, scene.background.y, scene.background.z, 1.0f);
-      g.ClearDepth(1.0);
-      g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    }
-    // Uniforms: camera, light and material.
-    g.UseProgram(lit.program.id());
-    const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    const glm::mat4 vp = viewProjection(scene.camera, aspect);
-    g.UniformMatrix4fv(lit.viewProjection, 1, GL_FALSE, glm::value_ptr(vp));
-    const Camera& c = scene.camera;
-    const PointLight& l = scene.light;
-    const Material& m = scene.material;
-    g.Uniform3f(lit.cameraPosition, c.eye.x, c.eye.y, c.eye.z);
-    g.Uniform3f(lit.lightPosition, l.positionMm.x, l.positionMm.y, l.positionMm.z);
-    g.Uniform3f(lit.lightRadiance, l.color.x * l.intensity, l.color.y * l.intensity, l.color.z * l.intensity);
-    g.Uniform3f(lit.ambient, m.ambient.x, m.ambient.y, m.ambient.z);
-    g.Uniform1f(lit.specular, m.specular);
-    g.Uniform1f(lit.shininess, m.shininess);
-    g.Uniform1f(lit.exposure, m.exposure);
-    g.ActiveTexture(GL_TEXTURE0);
-    g.BindTexture(GL_TEXTURE_2D, baseColor.id());
-    g.ActiveTexture(GL_TEXTURE1);
-    g.BindTexture(GL_TEXTURE_2D, normalMap.id());
-    // Draw.
-    g.BindVertexArray(mesh.vertexArray());
-    g.DrawElements(GL_TRIANGLES, mesh.indexCount(), GL_UNSIGNED_INT, nullptr);
-    return gl::checkGlError(g, "renderer: lit pass");
-  }
-};
+const PassTiming* RenderTimings::find(const std::string& name) const {
+  for (const PassTiming& p : passes)
+    if (p.name == name) return &p;
+  return nullptr;
+}
 
 Renderer::Renderer(std::unique_ptr<Impl> impl) : m_impl(std::move(impl)) {}
 Renderer::Renderer(Renderer&&) noexcept = default;
@@ -155,62 +44,125 @@ Result<Renderer> Renderer::create(const gl::GetProcAddressFn& getProcAddress,
   impl->settings = settings;
   const gl::GlApi& g = impl->gl();
   StateGuard guard(g);
-  // Step 1: both shader variants (vertex normals; normal-mapped).
+  // Step 1: every method's programs, the shadow maps and the post passes.
   const gl::ShaderLibrary library(settings.shaders);
-  auto flat = buildLit(g, library, false);
-  if (!flat) return flat.error();
-  auto mapped = buildLit(g, library, true);
-  if (!mapped) return mapped.error();
-  impl->litFlat = std::move(*flat);
-  impl->litMapped = std::move(*mapped);
-  // Step 2: default textures and timer queries.
+  Impl& s = *impl;
+  for (auto r : {createMethod(s.lit, g, library), createMethod(s.separable, g, library),
+                 createMethod(s.textureSpace, g, library), createMethod(s.rayMarch, g, library),
+                 createMethod(s.parallax, g, library), createMethod(s.post, g, library)}) {
+    if (!r) return r.error();
+  }
+  auto shadows = ShadowMaps::create(g, library, settings.shadowMapSize);
+  if (!shadows) return shadows.error();
+  s.shadows = std::move(*shadows);
+  // Step 2: the default texture and an empty vertex array for full-screen passes.
   g.ActiveTexture(GL_TEXTURE0);
-  if (auto r = uploadSolidTexture(g, impl->baseColor, kDefaultBase[0], kDefaultBase[1], kDefaultBase[2]);
+  if (auto r = uploadSolidTexture(g, s.defaultBaseColor, kDefaultBase[0], kDefaultBase[1], kDefaultBase[2]);
       !r) {
     return r.error();
   }
-  if (auto r = uploadSolidTexture(g, impl->normalMap, kFlatNormal[0], kFlatNormal[1], kFlatNormal[2]); !r) {
-    return r.error();
-  }
-  impl->drawQuery = gl::Query::create(g);
-  impl->resolveQuery = gl::Query::create(g);
+  s.emptyVertexArray = gl::VertexArray::create(g);
   if (auto r = gl::checkGlError(g, "renderer: create"); !r) return r.error();
   return Renderer(std::move(impl));
 }
 
-Result<void> Renderer::setMesh(const MeshArrays& mesh) {
+Result<MeshHandle> Renderer::createMesh(const MeshArrays& mesh) {
   StateGuard guard(m_impl->gl());
   Stopwatch watch;
-  auto r = m_impl->mesh.upload(m_impl->gl(), mesh);
+  MeshBuffers buffers;
+  auto r = buffers.upload(m_impl->gl(), mesh);
+  m_impl->gl().BindVertexArray(0);
+  m_impl->timings.uploadCpuMs = watch.elapsedMs();
+  if (!r) return r.error();
+  const MeshHandle handle{m_impl->nextId++};
+  m_impl->meshes.emplace(handle.id, std::move(buffers));
+  return handle;
+}
+
+Result<void> Renderer::updateMesh(MeshHandle mesh, const MeshUpdate& update) {
+  const auto it = m_impl->meshes.find(mesh.id);
+  if (it == m_impl->meshes.end()) {
+    return Error{"renderer: updateMesh of mesh " + std::to_string(mesh.id) +
+                 ", which this renderer does not hold"};
+  }
+  StateGuard guard(m_impl->gl());
+  Stopwatch watch;
+  auto r = it->second.update(m_impl->gl(), update);
   m_impl->timings.uploadCpuMs = watch.elapsedMs();
   return r;
+}
+
+void Renderer::destroyMesh(MeshHandle mesh) {
+  m_impl->meshes.erase(mesh.id);
+}
+
+Result<TextureHandle> Renderer::createTexture(const Image8& image) {
+  StateGuard guard(m_impl->gl());
+  gl::Texture texture;
+  m_impl->gl().ActiveTexture(GL_TEXTURE0);
+  if (auto r = uploadTexture(m_impl->gl(), texture, image); !r) return r.error();
+  const TextureHandle handle{m_impl->nextId++};
+  m_impl->textures.emplace(handle.id, std::move(texture));
+  return handle;
+}
+
+Result<void> Renderer::updateTexture(TextureHandle texture, const Image8& image) {
+  const auto it = m_impl->textures.find(texture.id);
+  if (it == m_impl->textures.end()) {
+    return Error{"renderer: updateTexture of texture " + std::to_string(texture.id) +
+                 ", which this renderer does not hold"};
+  }
+  StateGuard guard(m_impl->gl());
+  m_impl->gl().ActiveTexture(GL_TEXTURE0);
+  return uploadTexture(m_impl->gl(), it->second, image);
+}
+
+void Renderer::destroyTexture(TextureHandle texture) {
+  m_impl->textures.erase(texture.id);
+}
+
+Result<void> Renderer::setMesh(const MeshArrays& mesh) {
+  auto handle = createMesh(mesh);
+  if (!handle) return handle.error();
+  if (m_impl->singleMesh) destroyMesh(m_impl->singleMesh);
+  m_impl->singleMesh = *handle;
+  return {};
 }
 
 Result<void> Renderer::updateMesh(std::span<const Float3> positions, std::span<const Float3> normals,
                                   std::span<const Float4> tangents) {
-  StateGuard guard(m_impl->gl());
-  Stopwatch watch;
-  auto r = m_impl->mesh.update(m_impl->gl(), positions, normals, tangents);
-  m_impl->timings.uploadCpuMs = watch.elapsedMs();
-  return r;
+  const auto it = m_impl->meshes.find(m_impl->singleMesh.id);
+  if (it == m_impl->meshes.end()) return Error{"renderer: updateMesh before setMesh"};
+  const std::size_t n = it->second.vertexCount();
+  if (positions.size() != n || normals.size() != n || tangents.size() != n) {
+    return Error{"renderer: updateMesh needs " + std::to_string(n) +
+                 " positions, normals and tangents (the count given to setMesh)"};
+  }
+  return updateMesh(m_impl->singleMesh, {0, positions, normals, tangents, {}});
 }
 
 Result<void> Renderer::setBaseColor(const Image8& image) {
-  StateGuard guard(m_impl->gl());
-  m_impl->gl().ActiveTexture(GL_TEXTURE0);
-  return uploadTexture(m_impl->gl(), m_impl->baseColor, image);
+  if (m_impl->singleBaseColor) return updateTexture(m_impl->singleBaseColor, image);
+  auto handle = createTexture(image);
+  if (!handle) return handle.error();
+  m_impl->singleBaseColor = *handle;
+  return {};
 }
 
 Result<void> Renderer::setNormalMap(const Image8& image) {
-  StateGuard guard(m_impl->gl());
-  m_impl->gl().ActiveTexture(GL_TEXTURE0);
-  auto r = uploadTexture(m_impl->gl(), m_impl->normalMap, image);
-  if (r) m_impl->normalMapping = true;
-  return r;
+  if (m_impl->singleNormalMap) {
+    if (auto r = updateTexture(m_impl->singleNormalMap, image); !r) return r;
+  } else {
+    auto handle = createTexture(image);
+    if (!handle) return handle.error();
+    m_impl->singleNormalMap = *handle;
+  }
+  m_impl->singleNormalMapping = true;
+  return {};
 }
 
 void Renderer::setNormalMapping(bool enabled) {
-  m_impl->normalMapping = enabled;
+  m_impl->singleNormalMapping = enabled;
 }
 
 Result<Image8> Renderer::renderImage(const Scene& scene, int width, int height) {
@@ -218,22 +170,20 @@ Result<Image8> Renderer::renderImage(const Scene& scene, int width, int height) 
   const gl::GlApi& g = s.gl();
   StateGuard guard(g);
   Stopwatch total;
-  if (auto r = s.offscreen.ensure(g, width, height, s.settings.samples); !r) return r.error();
-  // Pass 1: lit.
-  g.BindFramebuffer(GL_FRAMEBUFFER, s.offscreen.drawFramebuffer());
-  g.Viewport(0, 0, width, height);
-  Stopwatch draw;
-  PassTimer drawTimer(g, s.drawQuery, s.settings.gpuTimers);
-  if (auto r = s.drawLit(scene, width, height, true); !r) return r.error();
-  s.timings.drawCpuMs = draw.elapsedMs();
-  s.timings.drawGpuMs = drawTimer.finishMs();
-  // Pass 2: resolve and read back.
-  Stopwatch readback;
-  PassTimer resolveTimer(g, s.resolveQuery, s.settings.gpuTimers);
-  auto image = s.offscreen.read(g);
-  s.timings.resolveGpuMs = resolveTimer.finishMs();
-  s.timings.readbackCpuMs = readback.elapsedMs();
+  s.passes.beginFrame(g, s.settings.gpuTimers);
+  if (auto r = s.targets.ensure(g, width, height, s.settings.samples); !r) return r.error();
+  if (auto r = s.renderFrame(scene, width, height, s.targets.outputFramebuffer(), 0, 0, true); !r) {
+    s.passes.finishFrame();
+    return r.error();
+  }
+  Result<Image8> image = Error{""};
+  auto r = s.passes.run("readback", [&]() -> Result<void> {
+    image = s.targets.readOutput(g);
+    return image ? Result<void>{} : image.error();
+  });
+  s.timings.passes = s.passes.finishFrame();
   s.timings.totalCpuMs = total.elapsedMs();
+  if (!r) return r.error();
   return image;
 }
 
@@ -247,27 +197,17 @@ Result<void> Renderer::renderTo(const Scene& scene, const HostFramebuffer& targe
   if (g.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
     return Error{"renderer: host framebuffer " + std::to_string(target.framebuffer) + " is incomplete"};
   }
-  g.Viewport(target.x, target.y, target.width, target.height);
-  if (target.clear) {  // clear only the viewport, not the host's whole framebuffer
-    g.Enable(GL_SCISSOR_TEST);
-    g.Scissor(target.x, target.y, target.width, target.height);
-  }
-  Stopwatch draw;
-  PassTimer drawTimer(g, s.drawQuery, s.settings.gpuTimers);
-  if (target.clear) {
-    g.ClearColor(scene.background.x, scene.background.y, scene.background.z, 1.0f);
-    g.ClearDepth(1.0);
-    g.DepthMask(GL_TRUE);
-    g.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  }
-  if (auto r = s.drawLit(scene, target.width, target.height, false); !r) return r.error();
-  s.timings.drawCpuMs = draw.elapsedMs();
-  s.timings.drawGpuMs = drawTimer.finishMs();
-  s.timings.resolveGpuMs = -1.0;
-  s.timings.readbackCpuMs = 0.0;
+  s.passes.beginFrame(g, s.settings.gpuTimers);
+  auto r =
+      s.renderFrame(scene, target.width, target.height, target.framebuffer, target.x, target.y, target.clear);
+  s.timings.passes = s.passes.finishFrame();
   s.timings.totalCpuMs = total.elapsedMs();
-  return {};
+  return r;
+}
+
+Result<FloatImage> Renderer::readFrame(FrameView view) {
+  StateGuard guard(m_impl->gl());
+  return m_impl->targets.readView(m_impl->gl(), view);
 }
 
 const RenderTimings& Renderer::lastTimings() const {

@@ -21,9 +21,10 @@ StateGuard::StateGuard(const gl::GlApi& gl) : m_gl(gl) {
   gl.GetIntegerv(GL_VERTEX_ARRAY_BINDING, &m_vertexArray);
   gl.GetIntegerv(GL_ARRAY_BUFFER_BINDING, &m_arrayBuffer);
   gl.GetIntegerv(GL_ACTIVE_TEXTURE, &m_activeTexture);
-  for (GLenum unit = 0; unit < 2; ++unit) {
-    gl.ActiveTexture(GL_TEXTURE0 + unit);
+  for (int unit = 0; unit < kUnits; ++unit) {
+    gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
     gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &m_texture2d[unit]);
+    gl.GetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &m_texture2dArray[unit]);
   }
   gl.ActiveTexture(static_cast<GLenum>(m_activeTexture));
   gl.GetIntegerv(GL_DEPTH_FUNC, &m_depthFunc);
@@ -33,6 +34,7 @@ StateGuard::StateGuard(const gl::GlApi& gl) : m_gl(gl) {
   gl.GetIntegerv(GL_UNPACK_ALIGNMENT, &m_unpackAlignment);
   gl.GetIntegerv(GL_UNPACK_ROW_LENGTH, &m_unpackRowLength);
   gl.GetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &m_pixelUnpackBuffer);
+  gl.GetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &m_pixelPackBuffer);
   gl.GetBooleanv(GL_DEPTH_WRITEMASK, &m_depthMask);
   gl.GetBooleanv(GL_COLOR_WRITEMASK, m_colorMask);
   gl.GetFloatv(GL_COLOR_CLEAR_VALUE, m_clearColor);
@@ -56,9 +58,10 @@ StateGuard::~StateGuard() {
   gl.UseProgram(name(m_program));
   gl.BindVertexArray(name(m_vertexArray));
   gl.BindBuffer(GL_ARRAY_BUFFER, name(m_arrayBuffer));
-  for (GLenum unit = 0; unit < 2; ++unit) {
-    gl.ActiveTexture(GL_TEXTURE0 + unit);
+  for (int unit = 0; unit < kUnits; ++unit) {
+    gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
     gl.BindTexture(GL_TEXTURE_2D, name(m_texture2d[unit]));
+    gl.BindTexture(GL_TEXTURE_2D_ARRAY, name(m_texture2dArray[unit]));
   }
   gl.ActiveTexture(static_cast<GLenum>(m_activeTexture));
   gl.DepthFunc(static_cast<GLenum>(m_depthFunc));
@@ -68,6 +71,7 @@ StateGuard::~StateGuard() {
   gl.PixelStorei(GL_UNPACK_ALIGNMENT, m_unpackAlignment);
   gl.PixelStorei(GL_UNPACK_ROW_LENGTH, m_unpackRowLength);
   gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, name(m_pixelUnpackBuffer));
+  gl.BindBuffer(GL_PIXEL_PACK_BUFFER, name(m_pixelPackBuffer));
   gl.DepthMask(m_depthMask);
   gl.ColorMask(m_colorMask[0], m_colorMask[1], m_colorMask[2], m_colorMask[3]);
   gl.ClearColor(m_clearColor[0], m_clearColor[1], m_clearColor[2], m_clearColor[3]);

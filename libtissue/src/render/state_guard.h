@@ -18,9 +18,11 @@ class StateGuard {
   GLint m_drawFramebuffer = 0, m_readFramebuffer = 0, m_renderbuffer = 0;
   GLint m_viewport[4] = {}, m_scissorBox[4] = {};
   GLint m_program = 0, m_vertexArray = 0, m_arrayBuffer = 0;
-  GLint m_activeTexture = 0, m_texture2d[2] = {};
+  static constexpr int kUnits = 8;  // the renderer binds textures on units 0..kUnits-1
+  GLint m_activeTexture = 0, m_texture2d[kUnits] = {}, m_texture2dArray[kUnits] = {};
   GLint m_depthFunc = 0, m_cullMode = 0, m_frontFace = 0;
-  GLint m_packAlignment = 0, m_unpackAlignment = 0, m_unpackRowLength = 0, m_pixelUnpackBuffer = 0;
+  GLint m_packAlignment = 0, m_unpackAlignment = 0, m_unpackRowLength = 0, m_pixelUnpackBuffer = 0,
+        m_pixelPackBuffer = 0;
   GLboolean m_depthMask = GL_TRUE, m_colorMask[4] = {};
   GLfloat m_clearColor[4] = {};
   GLdouble m_clearDepth = 1.0;

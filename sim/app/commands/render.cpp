@@ -1,11 +1,15 @@
-// tissue-sim render --mesh FILE --out IMAGE.png: one lit, normal-mapped image of a mesh.
+// tissue-sim render [--mesh FILE] --out IMAGE.png [--method lit|separable [--kernel MODEL] [--taps N]]:
+// one image of a mesh, lit or with screen-space separable SSS.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
 
+#include "../pass_timings_json.h"
 #include "command.h"
 #include "output.h"
+
+#include "../sss_material.h"
 #include "tissue/context/headless_context.h"
 #include "tissue/core/image.h"
 #include "tissue/mesh/deformable_surface.h"
@@ -18,7 +22,11 @@ namespace tissue::sim_app {
 namespace {
 
 struct RenderOptions {
-  std::string mesh;
+  std::string mesh = (dataDir() / "meshes" / "liver.obj").string();
+  std::string method = "lit";
+  std::string kernel = "preintegrated";
+  int taps = 17;
+  std::string material;  // data/materials/<name>.json; default: the mesh's stem
   std::string out;
   int width = 1024;  // pixels
   int height = 768;  // pixels
@@ -46,13 +54,13 @@ Float3 normalized(Float3 a) {
 }
 
 // The key light sits above, right of and behind the camera, at the camera's distance.
-render::PointLight keyLight(const render::Camera& camera) {
+render::Light keyLight(const render::Camera& camera) {
   const Float3 forward = sub(camera.target, camera.eye);
   const float distance = std::sqrt(forward.x * forward.x + forward.y * forward.y + forward.z * forward.z);
   const Float3 f = normalized(forward);
   const Float3 right = normalized(cross(f, camera.up));
   const Float3 up = cross(right, f);
-  render::PointLight light;
+  render::Light light;
   light.positionMm = add(camera.eye, mul(add(mul(right, 0.6f), mul(up, 0.8f)), distance));
   return light;
 }
@@ -70,6 +78,20 @@ int run(RenderOptions o, const GlobalOptions& global) {
   if (o.normalMap.empty()) o.normalMap = findDataTexture(stem, "normal_map").string();
   if (o.baseColor.empty()) o.baseColor = findDataTexture(stem, "base_color").string();
   if (o.width <= 0 || o.height <= 0) return fail(cmd, "--width and --height must be positive pixels");
+  if (o.method != "lit" && o.method != "separable") {
+    return fail(cmd, "--method " + o.method + " is not one of lit, separable");
+  }
+  render::SceneObject object;
+  if (o.method == "separable") {
+    if (o.material.empty()) o.material = stem;
+    auto optical = loadDataMaterial(o.material);
+    if (!optical) return fail(cmd, "--material " + o.material + ": " + optical.error().message);
+    auto separable = makeSeparableMaterial(*optical, o.kernel, o.taps);
+    if (!separable)
+      return fail(cmd, "--kernel " + o.kernel + " --taps " + std::to_string(o.taps) + ": " +
+                           separable.error().message);
+    object.method = separable->settings;
+  }
   // Step 1: the mesh, its angle-weighted normals (per geometric vertex, so seams stay smooth)
   // and UV tangent frames.
   auto loaded = mesh::loadMesh(o.mesh, {.requireUvs = false, .scaleToMm = o.scale});
@@ -93,18 +115,17 @@ int run(RenderOptions o, const GlobalOptions& global) {
   auto renderer = render::Renderer::create((*context)->procAddressFunction(),
                                            {.shaders = {}, .samples = o.samples, .gpuTimers = true});
   if (!renderer) return fail(cmd, renderer.error().message);
-  if (auto r = renderer->setMesh({m.positions, normals, tangents, m.uvs, m.triangles}); !r) {
-    return fail(cmd, r.error().message);
-  }
-  if (!o.baseColor.empty() && hasUvs) {
-    auto image = readTexture(o.baseColor, "--base-color");
+  auto meshHandle = renderer->createMesh({m.positions, normals, tangents, m.uvs, m.triangles, {}});
+  if (!meshHandle) return fail(cmd, meshHandle.error().message);
+  object.mesh = *meshHandle;
+  for (auto [path, handle, what] : {std::tuple{o.baseColor, &object.baseColor, "--base-color"},
+                                    std::tuple{o.normalMap, &object.normalMap, "--normal-map"}}) {
+    if (path.empty() || !hasUvs) continue;
+    auto image = readTexture(path, what);
     if (!image) return fail(cmd, image.error().message);
-    if (auto r = renderer->setBaseColor(*image); !r) return fail(cmd, r.error().message);
-  }
-  if (!o.normalMap.empty() && hasUvs) {
-    auto image = readTexture(o.normalMap, "--normal-map");
-    if (!image) return fail(cmd, image.error().message);
-    if (auto r = renderer->setNormalMap(*image); !r) return fail(cmd, r.error().message);
+    auto texture = renderer->createTexture(*image);
+    if (!texture) return fail(cmd, texture.error().message);
+    *handle = *texture;
   }
   // Step 3: frame the bounding box, light it, render (a first frame allocates the target).
   Float3 lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
@@ -116,7 +137,9 @@ int run(RenderOptions o, const GlobalOptions& global) {
   }
   render::Scene scene;
   scene.camera = render::frameBoundingBox(lo, hi, static_cast<float>(o.width) / static_cast<float>(o.height));
-  scene.light = keyLight(scene.camera);
+  scene.lights = {keyLight(scene.camera)};
+  scene.lights[0].castsShadows = true;  // shadows, and the separable method's transmission
+  scene.objects = {object};
   auto first = renderer->renderImage(scene, o.width, o.height);
   if (!first) return fail(cmd, first.error().message);
   const double firstMs = renderer->lastTimings().totalCpuMs;
@@ -133,11 +156,15 @@ int run(RenderOptions o, const GlobalOptions& global) {
   out["gl_renderer"] = (*context)->info().renderer;
   out["render_ms"] = t.totalCpuMs;
   out["first_frame_ms"] = firstMs;
-  out["draw_cpu_ms"] = t.drawCpuMs;
-  out["draw_gpu_ms"] = t.drawGpuMs;
-  out["readback_ms"] = t.readbackCpuMs;
+  out["passes"] = passTimingsJson(t);
   out["upload_ms"] = t.uploadCpuMs;
   out["samples"] = o.samples;
+  out["method"] = o.method;
+  if (o.method == "separable") {
+    out["kernel"] = o.kernel;
+    out["taps"] = o.taps;
+    out["material"] = o.material;
+  }
   out["triangles"] = m.triangles.size();
   out["shading"] = hasUvs ? (o.normalMap.empty() ? "vertex normals (no --normal-map)" : "normal-mapped")
                           : "vertex normals (mesh has no UVs; textures ignored)";
@@ -151,8 +178,14 @@ int run(RenderOptions o, const GlobalOptions& global) {
 
 void registerRenderCommand(CLI::App& app, const GlobalOptions& global, int& exitCode) {
   auto opts = std::make_shared<RenderOptions>();
-  auto* cmd = app.add_subcommand("render", "render a mesh lit (Blinn-Phong, optional normal map) to a PNG");
-  cmd->add_option("--mesh", opts->mesh, "mesh file (OBJ, PLY, OFF, STL)")->required();
+  auto* cmd = app.add_subcommand("render", "render a mesh lit or with separable SSS to a PNG");
+  cmd->add_option("--mesh", opts->mesh, "mesh file (OBJ, PLY, OFF, STL; default data/meshes/liver.obj)");
+  cmd->add_option("--method", opts->method, "shading method: lit or separable (screen-space SSS)");
+  cmd->add_option("--kernel", opts->kernel,
+                  "separable kernel model: svd, preintegrated, guided, manual, deon, jimenez");
+  cmd->add_option("--taps", opts->taps, "separable kernel taps per 1D pass (odd, default 17)");
+  cmd->add_option("--material", opts->material,
+                  "data/materials/<NAME>.json for separable (default: the mesh's name)");
   cmd->add_option("--out", opts->out, "output PNG (written atomically)")->required();
   cmd->add_option("--width", opts->width, "image width, pixels (default 1024)");
   cmd->add_option("--height", opts->height, "image height, pixels (default 768)");

@@ -40,7 +40,7 @@ render::Scene benchScene(Float3 target, float distance, float organSize, float r
   scene.camera.eye = {target.x, target.y - dy / n * distance, target.z - dz / n * distance};
   scene.camera.nearMm = std::max(distance - organSize, distance * 0.05f);
   scene.camera.farMm = std::hypot(distance + organSize, rowLength);
-  scene.light.positionMm = {target.x + 0.6f * distance, target.y + 0.9f * distance, target.z + distance};
+  scene.lights[0].positionMm = {target.x + 0.6f * distance, target.y + 0.9f * distance, target.z + distance};
   return scene;
 }
 
@@ -79,7 +79,7 @@ int run(const BenchOptions& o, const GlobalOptions& global) {
                         0.5f * (organ->lo.z + organ->hi.z)};
     const float width = organ->hi.x - organ->lo.x;
     size = std::hypot(width, organ->hi.y - organ->lo.y, organ->hi.z - organ->lo.z);
-    render::TextureSpaceSettings plain, optimised;
+    render::TsdSettings plain, optimised;
     plain.gaussians = optimised.gaussians = *gaussians;
     plain.cull = plain.clip = plain.depthSize = false;
     for (int objects : kObjects) {
@@ -117,7 +117,7 @@ int run(const BenchOptions& o, const GlobalOptions& global) {
     {
       const render::Scene scene = benchScene({0, 0, 0}, kDistances[0] * size, size, width);
       const std::vector<Float3> one = {{-centre.x, -centre.y, -centre.z}};
-      render::TextureSpaceSettings six = plain;
+      render::TsdSettings six = plain;
       six.gaussians = *skinGaussians(6);
       if (auto r = renderer->renderImage(scene, o.width, o.height, six, one); !r)
         return fail(cmd, r.error().message);
@@ -131,7 +131,7 @@ int run(const BenchOptions& o, const GlobalOptions& global) {
         auto g = skinGaussians(n);
         if (!g) return fail(cmd, g.error().message);
         for (bool on : {false, true}) {
-          render::TextureSpaceSettings s = on ? optimised : plain;
+          render::TsdSettings s = on ? optimised : plain;
           s.gaussians = *g;
           std::vector<double> ms;
           Result<Image8> image = Error{"not rendered"};

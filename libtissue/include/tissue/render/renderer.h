@@ -1,13 +1,21 @@
 #pragma once
 /// \file
-/// The renderer core. It does not own a GL context: it is created with a getProcAddress
-/// function (the host's or a tissue context's) and uses whatever context is current at each
-/// call (the one it was created on, or one sharing objects with it). It draws either into its
-/// own offscreen framebuffer, read back to an Image8, or into a host's framebuffer, and it
-/// leaves the host's GL state as it found it (see renderTo).
+/// The renderer: a pipeline of named, timed passes over a scene of objects, each shaded by its
+/// own method (tissue/render/shading.h). It does not own a GL context: it is created with a
+/// getProcAddress function (the host's or a tissue context's) and uses whatever context is
+/// current at each call (the one it was created on, or one sharing objects with it). It draws
+/// either into its own offscreen framebuffer, read back to an Image8, or into a host's
+/// framebuffer, and it leaves the host's GL state as it found it (see renderTo).
+///
+/// The frame: shadow:<light> (one depth pass per shadow-casting light) -> clear -> one pass per
+/// shading method present (lit, separable:geometry, ...) into linear HDR targets -> resolve
+/// (MSAA only) -> method post passes (separable:blur-x, separable:blur-y) -> composite (HDR,
+/// RGBA16F) -> tonemap (Reinhard, sRGB8) -> readback (offscreen only).
 
 #include <memory>
 #include <span>
+#include <string>
+#include <vector>
 
 #include "tissue/core/image.h"
 #include "tissue/core/result.h"
@@ -25,6 +33,19 @@ struct MeshArrays {
   std::span<const Float4> tangents;     ///< #V (unit T, handedness w = +-1); B = w * cross(N, T)
   std::span<const Float2> uvs;          ///< #V texture coordinates
   std::span<const Triangle> triangles;  ///< #F, counter-clockwise seen from outside
+  /// Optional: #V local planes (N_S unit, d mm) of subsurface texture mapping (François eq. 14),
+  /// for the ray-marching methods; empty = none (attribute 4 reads (0, 0, 1, 0)).
+  std::span<const Float4> planes;
+};
+
+/// What changed in a deforming mesh: each non-empty span replaces that attribute for vertices
+/// [firstVertex, firstVertex + size) with glBufferSubData; empty spans leave it as it is.
+struct MeshUpdate {
+  std::size_t firstVertex = 0;        ///< index of the first vertex replaced
+  std::span<const Float3> positions;  ///< mm
+  std::span<const Float3> normals;    ///< unit
+  std::span<const Float4> tangents;   ///< (unit T, w = +-1)
+  std::span<const Float4> planes;     ///< (N_S, d mm); the mesh must have been created with planes
 };
 
 /// A framebuffer owned by the host, and where in it to draw.
@@ -34,32 +55,56 @@ struct HostFramebuffer {
   int y = 0;                     ///< viewport origin, pixels
   int width = 0;                 ///< viewport size, pixels
   int height = 0;                ///< viewport size, pixels
-  bool clear = true;             ///< clear colour and depth inside the viewport first
+  /// Fill the viewport's background too; false: only pixels covered by an object are written.
+  bool clear = true;
 };
 
-/// The cost of the last frame, per pass. GPU times come from GL_TIME_ELAPSED queries and are
-/// negative when timers are off.
+/// One pass of the last frame. GPU time comes from a GL_TIME_ELAPSED query and is -1 when
+/// timers are off or the driver's result is impossible (longer than the wall clock).
+struct PassTiming {
+  std::string name;     ///< e.g. "shadow:0", "lit", "separable:blur-x", "tonemap"
+  double cpuMs = 0.0;   ///< ms, CPU time issuing the pass
+  double gpuMs = -1.0;  ///< ms, GPU time of the pass
+};
+
+/// The cost of the last frame, pass by pass, in execution order.
 struct RenderTimings {
-  double drawCpuMs = 0.0;      ///< ms, CPU time issuing the lit pass
-  double drawGpuMs = -1.0;     ///< ms, GPU time of the lit pass
-  double resolveGpuMs = -1.0;  ///< ms, GPU time of the MSAA resolve and readback (offscreen only)
-  double readbackCpuMs = 0.0;  ///< ms, CPU time of resolve + glReadPixels + flip (offscreen only)
-  double totalCpuMs = 0.0;     ///< ms, the whole call including waiting for the timers
-  double uploadCpuMs = 0.0;    ///< ms, CPU time of the last setMesh/updateMesh
+  std::vector<PassTiming> passes;
+  double totalCpuMs = 0.0;   ///< ms, the whole call including waiting for the timers
+  double uploadCpuMs = 0.0;  ///< ms, CPU time of the last mesh upload or update
+  /// The pass named `name`, or nullptr.
+  const PassTiming* find(const std::string& name) const;
 };
 
 /// Creation settings.
 struct RendererSettings {
   gl::ShaderLibrarySettings shaders;  ///< where GLSL comes from (embedded, or an override folder)
-  int samples = 0;                    ///< MSAA samples of the offscreen target (0 or 1: none)
+  int samples = 0;                    ///< MSAA samples of the geometry passes (0 or 1: none)
   bool gpuTimers = true;              ///< time passes with GL queries (waits for the GPU each frame)
+  int shadowMapSize = 1024;           ///< pixels, square, per shadow-casting light
 };
 
-/// Draws a lit, normal-mapped triangle mesh. Movable, not copyable. Every method needs the
-/// renderer's context (or one sharing with it) current; so does destruction.
+/// An intermediate target of the last frame, for inspection and CPU references.
+enum class FrameView {
+  Radiance,        ///< linear HDR radiance without the separable diffuse (RGB; a = 1 where covered)
+  Diffuse,         ///< separable objects' diffuse radiance before the blur (RGB; a = object id, 0 = none)
+  BlurredDiffuse,  ///< the same after both blur passes (RGB; a = object id)
+  Position,        ///< world position (xyz, mm) and view depth (w, mm; 0 where nothing was drawn)
+};
+
+/// A float RGBA image, rows top to bottom.
+struct FloatImage {
+  int width = 0;
+  int height = 0;
+  std::vector<Float4> pixels;  ///< width * height
+  const Float4& at(int x, int y) const { return pixels[static_cast<std::size_t>(y) * width + x]; }
+};
+
+/// Draws scenes of deforming objects. Movable, not copyable. Every method needs the renderer's
+/// context (or one sharing with it) current; so does destruction.
 class Renderer {
  public:
-  /// Loads GL through `getProcAddress` and builds the shader variants; the context must be
+  /// Loads GL through `getProcAddress` and builds every method's shaders; the context must be
   /// current and GL 3.3 core or newer.
   static Result<Renderer> create(const gl::GetProcAddressFn& getProcAddress,
                                  const RendererSettings& settings = {});
@@ -68,27 +113,45 @@ class Renderer {
   Renderer& operator=(Renderer&&) noexcept;
   ~Renderer();
 
-  /// Uploads a mesh, replacing the previous one. All arrays must have #V entries.
+  /// Uploads a mesh (one buffer per attribute). All arrays must have #V entries.
+  Result<MeshHandle> createMesh(const MeshArrays& mesh);
+  /// Re-uploads what changed of a deforming mesh (glBufferSubData of the given ranges only).
+  Result<void> updateMesh(MeshHandle mesh, const MeshUpdate& update);
+  /// Frees a mesh; scenes must no longer name it.
+  void destroyMesh(MeshHandle mesh);
+  /// Uploads a texture (1-4 channels, mipmapped, repeating). Colour textures are sRGB-encoded.
+  Result<TextureHandle> createTexture(const Image8& image);
+  /// Replaces a texture's image.
+  Result<void> updateTexture(TextureHandle texture, const Image8& image);
+  /// Frees a texture; scenes must no longer name it.
+  void destroyTexture(TextureHandle texture);
+
+  /// Single-mesh API: uploads the mesh drawn when a scene has no objects.
   Result<void> setMesh(const MeshArrays& mesh);
-  /// Re-uploads only the deforming attributes (glBufferSubData); sizes must match setMesh.
+  /// Single-mesh API: re-uploads positions, normals and tangents; sizes must match setMesh.
   Result<void> updateMesh(std::span<const Float3> positions, std::span<const Float3> normals,
                           std::span<const Float4> tangents);
-  /// Sets the base colour texture (sRGB-encoded, 1-4 channels; mipmapped, repeating).
+  /// Single-mesh API: the base colour texture (sRGB-encoded, 1-4 channels; mipmapped, repeating).
   Result<void> setBaseColor(const Image8& image);
-  /// Sets the tangent-space normal map (RGB = n * 0.5 + 0.5) and turns normal mapping on.
+  /// Single-mesh API: the tangent-space normal map (RGB = n * 0.5 + 0.5); turns normal mapping on.
   Result<void> setNormalMap(const Image8& image);
-  /// Turns normal mapping off (the interpolated vertex normals shade) or back on.
+  /// Single-mesh API: turns normal mapping off (the interpolated vertex normals shade) or on.
   void setNormalMapping(bool enabled);
 
   /// Renders into the renderer's own offscreen framebuffer and reads it back: RGBA8, rows
   /// top to bottom. `width` x `height` pixels.
   Result<Image8> renderImage(const Scene& scene, int width, int height);
 
-  /// Renders into the host's framebuffer. Restores afterwards: draw/read framebuffer bindings,
-  /// viewport, scissor box and test, program, vertex array, array buffer, active texture
-  /// unit and the 2D textures of units 0 and 1, depth test/func/mask, cull face/mode, front
-  /// face, blending, colour mask, clear colour and depth, FRAMEBUFFER_SRGB and multisample.
+  /// Renders into the host's framebuffer (the tone-map pass writes its viewport; the host's
+  /// depth buffer is neither read nor written). Restores afterwards: draw/read framebuffer
+  /// bindings, viewport, scissor box and test, program, vertex array, array buffer, active
+  /// texture unit and the 2D and 2D-array textures of units 0-7, depth test/func/mask, cull
+  /// face/mode, front face, blending and its function, colour mask, clear colour and depth,
+  /// FRAMEBUFFER_SRGB and multisample.
   Result<void> renderTo(const Scene& scene, const HostFramebuffer& target);
+
+  /// Reads an intermediate target of the last frame (float RGBA, rows top to bottom).
+  Result<FloatImage> readFrame(FrameView view);
 
   /// Timings of the last render call.
   const RenderTimings& lastTimings() const;

@@ -19,8 +19,9 @@
 
 namespace tissue::render {
 
-/// Per-frame settings of texture-space diffusion.
-struct TextureSpaceSettings {
+/// Per-frame settings of the standalone texture-space renderer (the pipeline's per-object
+/// TextureSpaceSettings in shading.h is still the stub: this renderer is not wired into it yet).
+struct TsdSettings {
   std::vector<ProfileGaussian> gaussians;  ///< the profile, increasing variances (1..8 terms)
   bool cull = true;                        ///< culled irradiance map (Jimenez §3, 105 degrees)
   bool clip = true;                        ///< clipped irradiance map (§5, eq. 5-6)
@@ -73,7 +74,7 @@ class TextureSpaceRenderer {
 
   /// Renders the instances (one per offset, mm; empty = one at the origin) into an RGBA8 image,
   /// rows top to bottom. Each instance runs the whole texture-space chain.
-  Result<Image8> renderImage(const Scene& scene, int width, int height, const TextureSpaceSettings& settings,
+  Result<Image8> renderImage(const Scene& scene, int width, int height, const TsdSettings& settings,
                              std::span<const Float3> instanceOffsetsMm = {});
   /// The same frame with a given diffused-irradiance map instead of the Gaussian chain (T_max^2
   /// texels, premultiplied by coverage in a; the map of the unoptimised path, s = 1), one instance
@@ -83,9 +84,9 @@ class TextureSpaceRenderer {
   /// The irradiance pass of the last instance rendered, read back (for CPU references).
   Result<IrradianceReadback> readIrradiance();
   /// The diffused irradiance sum_i w_i map_i of the last instance (T x T texels, a = coverage).
-  Result<FloatMap> readDiffused(const TextureSpaceSettings& settings);
+  Result<FloatMap> readDiffused(const TsdSettings& settings);
   /// d_ref (mm) that `settings` gives for an image `height` pixels high with `scene`'s camera.
-  float referenceDistance(const Scene& scene, int height, const TextureSpaceSettings& settings) const;
+  float referenceDistance(const Scene& scene, int height, const TsdSettings& settings) const;
 
  private:
   struct Impl;

@@ -23,7 +23,7 @@ Mat4 toMat4(const glm::mat4& m) {
   return out;
 }
 
-TextureSpaceDiffusionSettings passSettings(const TextureSpaceSettings& s, float referenceMm) {
+TextureSpaceDiffusionSettings passSettings(const TsdSettings& s, float referenceMm) {
   TextureSpaceDiffusionSettings p;
   p.gaussians = s.gaussians;
   p.irradiance = {s.cull, s.clip, s.depthSize, s.clipD, referenceMm};
@@ -98,9 +98,16 @@ struct TextureSpaceRenderer::Impl {
     f.eye = c.eye;
     f.boundsLo = lo, f.boundsHi = hi;
     f.offsetMm = offset;
-    f.lightPosition = scene.light.positionMm;
-    const float k = scene.light.intensity;
-    f.lightRadiance = {scene.light.color.x * k, scene.light.color.y * k, scene.light.color.z * k};
+    // The first light of the scene (texture-space diffusion here takes one; no shadows). A
+    // directional light becomes a point far along its direction.
+    if (!scene.lights.empty()) {
+      const Light& l = scene.lights.front();
+      f.lightPosition = l.type == LightType::Point
+                            ? l.positionMm
+                            : Float3{c.target.x - l.direction.x * 1e6f, c.target.y - l.direction.y * 1e6f,
+                                     c.target.z - l.direction.z * 1e6f};
+      f.lightRadiance = {l.color.x * l.intensity, l.color.y * l.intensity, l.color.z * l.intensity};
+    }
     f.ambient = scene.material.ambient;
     return f;
   }
@@ -111,7 +118,7 @@ struct TextureSpaceRenderer::Impl {
     s.cameraPosition = scene.camera.eye;
     s.specular = scene.material.specular;
     s.shininess = scene.material.shininess;
-    s.exposure = scene.material.exposure;
+    s.exposure = scene.exposure;
     s.baseColor = baseColor.id();
     return s;
   }
@@ -177,7 +184,11 @@ Result<void> TextureSpaceRenderer::updateMesh(std::span<const Float3> positions,
                                               std::span<const Float4> tangents) {
   StateGuard guard(m_impl->gl());
   m_impl->bounds(positions);
-  return m_impl->mesh.update(m_impl->gl(), positions, normals, tangents);
+  MeshUpdate update;
+  update.positions = positions;
+  update.normals = normals;
+  update.tangents = tangents;
+  return m_impl->mesh.update(m_impl->gl(), update);
 }
 
 Result<void> TextureSpaceRenderer::setBaseColor(const Image8& image) {
@@ -186,8 +197,7 @@ Result<void> TextureSpaceRenderer::setBaseColor(const Image8& image) {
   return uploadTexture(m_impl->gl(), m_impl->baseColor, image);
 }
 
-float TextureSpaceRenderer::referenceDistance(const Scene& scene, int height,
-                                              const TextureSpaceSettings& s) const {
+float TextureSpaceRenderer::referenceDistance(const Scene& scene, int height, const TsdSettings& s) const {
   if (s.referenceDistanceMm > 0.0f) return s.referenceDistanceMm;
   // One texel of the full map per pixel: a pixel spans 2 d tan(fov / 2) / H mm at distance d.
   const float tanHalf = std::tan(glm::radians(scene.camera.verticalFovDeg) * 0.5f);
@@ -195,7 +205,7 @@ float TextureSpaceRenderer::referenceDistance(const Scene& scene, int height,
 }
 
 Result<Image8> TextureSpaceRenderer::renderImage(const Scene& scene, int width, int height,
-                                                 const TextureSpaceSettings& settings,
+                                                 const TsdSettings& settings,
                                                  std::span<const Float3> instanceOffsetsMm) {
   Impl& s = *m_impl;
   const gl::GlApi& g = s.gl();
@@ -264,7 +274,7 @@ Result<IrradianceReadback> TextureSpaceRenderer::readIrradiance() {
   return out;
 }
 
-Result<FloatMap> TextureSpaceRenderer::readDiffused(const TextureSpaceSettings& settings) {
+Result<FloatMap> TextureSpaceRenderer::readDiffused(const TsdSettings& settings) {
   const gl::GlApi& g = m_impl->gl();
   StateGuard guard(g);
   const int size = m_impl->tsd.irradianceMap().size();

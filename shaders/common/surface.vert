@@ -1,11 +1,12 @@
 #version 330 core
-// Lit surface, vertex stage. Positions arrive in world space (mm): the mesh module and the
-// simulator already work there, so there is no model matrix.
+// Surface vertex stage shared by the shading methods. Positions arrive in world space (mm):
+// the mesh module and the simulator already work there, so there is no model matrix.
 
 layout(location = 0) in vec3 a_position;  // mm
 layout(location = 1) in vec3 a_normal;    // unit
 layout(location = 2) in vec4 a_tangent;   // unit T, handedness w = +-1
 layout(location = 3) in vec2 a_uv;
+layout(location = 4) in vec4 a_plane;     // local plane (N_S, d mm), François eq. 14; optional
 
 uniform mat4 u_viewProjection;  // world (mm) to clip space
 
@@ -13,11 +14,13 @@ out vec3 v_worldPosition;
 out vec3 v_normal;
 out vec4 v_tangent;
 out vec2 v_uv;
+out vec4 v_plane;
 
 void main() {
   v_worldPosition = a_position;
   v_normal = a_normal;
   v_tangent = a_tangent;
   v_uv = a_uv;
+  v_plane = a_plane;
   gl_Position = u_viewProjection * vec4(a_position, 1.0);
 }

@@ -1,0 +1,16 @@
+#pragma once
+// The ray-march method (ray-marched subsurface texture mapping, François et al.): not in this build. It
+// arrives with branch `raymarch`; until then drawing an object with it is an Error, never a silent fallback
+// to another method.
+#include "frame_context.h"
+
+namespace tissue::render {
+
+class RayMarchMethod {
+ public:
+  static Result<RayMarchMethod> create(const gl::GlApi& gl, const gl::ShaderLibrary& library);
+  /// Its passes over `objects`; for now always an Error naming the missing method.
+  Result<void> draw(const FrameContext& frame, std::span<const ObjectDraw> objects) const;
+};
+
+}  // namespace tissue::render

@@ -1,0 +1,43 @@
+#pragma once
+// Named passes of one frame, each timed on the CPU and with a GL_TIME_ELAPSED query. The
+// queries are collected once at the end of the frame (one wait, not one per pass).
+#include <string>
+#include <vector>
+
+#include "tissue/core/result.h"
+#include "tissue/core/stopwatch.h"
+#include "tissue/gl/objects.h"
+#include "tissue/render/renderer.h"
+
+namespace tissue::render {
+
+class PassTimers {
+ public:
+  /// Starts a frame; `gpu` turns the timer queries on.
+  void beginFrame(const gl::GlApi& gl, bool gpu);
+  /// Runs `pass` (a callable returning Result<void>) as the pass `name`.
+  template <class F>
+  Result<void> run(const std::string& name, F&& pass) {
+    begin(name);
+    Result<void> r = pass();
+    end();
+    return r;
+  }
+  /// Waits for the queries and returns every pass of the frame, in order.
+  std::vector<PassTiming> finishFrame();
+
+ private:
+  struct Running {
+    PassTiming timing;
+    Stopwatch started;  // wall clock since the pass began: bounds a plausible GPU time
+    int query = -1;
+  };
+  void begin(const std::string& name);
+  void end();
+  const gl::GlApi* m_gl = nullptr;
+  bool m_gpu = false;
+  std::vector<gl::Query> m_queries;  // grows to the most passes a frame has had
+  std::vector<Running> m_passes;
+};
+
+}  // namespace tissue::render

@@ -1,0 +1,24 @@
+#version 330 core
+// Lit method: base colour texture, tangent-space normal map, Blinn-Phong from every light
+// with its shadow, into the linear HDR radiance target (the tone map comes last, in
+// post/tonemap.frag). Writes no separable diffuse.
+
+#include "common/surface.glsl"
+#include "common/blinn_phong.glsl"
+#include "common/lights.glsl"
+
+void main() {
+  vec3 N = surfaceNormal();
+  vec3 Ng = normalize(v_normal);
+  vec3 albedo = surfaceAlbedo();
+  vec3 V = normalize(u_cameraPosition - v_worldPosition);
+  vec3 color = u_ambient * albedo;
+  for (int i = 0; i < u_lightCount; ++i) {
+    vec3 L = lightDirection(i, v_worldPosition);
+    color += blinnPhong(N, L, V, albedo, u_specular, u_shininess) * u_lightRadiance[i] *
+             shadowFactor(i, v_worldPosition, Ng);
+  }
+  o_radiance = vec4(color, 1.0);
+  o_diffuse = vec4(0.0, 0.0, 0.0, u_objectId);
+  o_position = surfacePosition();
+}

@@ -1,0 +1,63 @@
+#pragma once
+/// \file
+/// sss-bench: subsurface-scattering methods on one frame of the data liver, each setting timed
+/// and measured against the CPU reference (tissue::reference::convolveScreen with the
+/// material's dipole profile). Each method contributes rows through an SssBenchMethod entry in
+/// commands/sss_bench.cpp (separable here; texture-space adds its own).
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "tissue/core/result.h"
+#include "tissue/optics/materials.h"
+#include "tissue/reference/screen_convolution.h"
+#include "tissue/render/renderer.h"
+
+namespace tissue::sim_app {
+
+/// One measured setting.
+struct SssBenchRow {
+  std::string method;        ///< "separable", "texture-space", ...
+  std::string setting;       ///< e.g. "preintegrated-17"
+  double ms = 0.0;           ///< ms, median wall time of a whole frame (renderImage, read back)
+  double methodMs = 0.0;     ///< ms, median CPU time of the method's own passes
+  double imageRms = 0.0;     ///< RMS vs the reference, linear radiance (exposure 1)
+  double relativeRms = 0.0;  ///< imageRms / mean reference radiance
+};
+
+/// What every method's rows share: the renderer with the organ uploaded, the frame's scene (one
+/// object; a method sets its settings), the optical material and the CPU reference.
+struct SssBenchContext {
+  render::Renderer* renderer = nullptr;
+  render::Scene scene;
+  int width = 320, height = 240;  ///< pixels
+  int frames = 5;                 ///< timed frames per setting
+  optics::ScatteringMaterial material;
+  std::vector<reference::RadialProfile> profiles;  ///< by object id: [0] none, [1] the organ's truth
+  std::vector<Float4> diffuse, position;           ///< the pre-blur frame the reference convolves
+  std::vector<Float3> reference;                   ///< the reference result, per pixel
+};
+
+/// Renders `ctx.scene` `ctx.frames` times (after one warm-up); median frame ms and the median
+/// summed CPU ms of the passes whose names start with `passPrefix`.
+Result<std::pair<double, double>> timeFrames(SssBenchContext& ctx, const std::string& passPrefix);
+
+/// Fills ctx.diffuse/position from the last frame (Diffuse and Position views) and convolves
+/// the reference, once.
+Result<void> ensureReference(SssBenchContext& ctx);
+
+/// Compares the last frame's blurred diffuse (FrameView::BlurredDiffuse) with the reference.
+Result<reference::ImageError> compareLastFrame(SssBenchContext& ctx);
+
+/// The separable method's rows: every kernel model at 7, 11, 17 and 25 taps. Models that cannot
+/// be built for the material (e.g. manual without Table A.1 parameters) go to `skipped`.
+Result<std::vector<SssBenchRow>> separableBenchRows(SssBenchContext& ctx, nlohmann::json& skipped);
+
+/// A method of the bench: its name and how it makes its rows.
+struct SssBenchMethod {
+  const char* name;
+  Result<std::vector<SssBenchRow>> (*rows)(SssBenchContext& ctx, nlohmann::json& skipped);
+};
+
+}  // namespace tissue::sim_app

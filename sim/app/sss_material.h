@@ -1,0 +1,33 @@
+#pragma once
+/// \file
+/// Turning an optical material into what the separable SSS method takes as plain arrays
+/// (render::SeparableSettings: kernel taps {w_R, w_G, w_B, offset_mm} and a transmittance table),
+/// and into the ground truth its CPU reference convolves with. The apps wire optics to the
+/// renderer here; the renderer itself never sees optics. Lengths in mm.
+
+#include <string>
+
+#include "tissue/core/result.h"
+#include "tissue/optics/materials.h"
+#include "tissue/reference/screen_convolution.h"
+#include "tissue/render/shading.h"
+
+namespace tissue::sim_app {
+
+/// A material ready for the separable method and for its reference.
+struct SeparableMaterial {
+  render::SeparableSettings settings;  ///< kernel and transmittance for the renderer
+  reference::RadialProfile truth;      ///< the dipole profile normalised to 1 (mm^-2): the reference's R
+  std::string kernelName;              ///< e.g. "preintegrated-17"
+};
+
+/// Builds kernel `model` (svd, preintegrated, guided, manual, deon, jimenez; rank 1) with `taps`
+/// taps for `material`, and its transmittance T(d) = int R(sqrt(r^2 + d^2)) dA / int R dA
+/// (Jimenez et al. 2010, for a normalised profile) at 16 thicknesses. Errors name the model.
+Result<SeparableMaterial> makeSeparableMaterial(const optics::ScatteringMaterial& material,
+                                                const std::string& model, int taps);
+
+/// The first layer of data/materials/<name>.json as an optical material.
+Result<optics::ScatteringMaterial> loadDataMaterial(const std::string& name);
+
+}  // namespace tissue::sim_app
