@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "demo_render.h"
+#include "demo_texture_space.h"
 #include "material_file.h"
 #include "output.h"
 #include "tissue/core/atomic_file.h"
@@ -230,9 +231,12 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
     report["render"]["images"] = images;
   }
 
-  // The poked organ (the surface is in that state after the last renderFrame) in separable SSS.
+  // The poked organ (the surface is in that state after the last renderFrame) in separable SSS
+  // and in texture-space diffusion.
   report["render_separable"] =
       renderer.renderSeparable(*d.surface, d.material, o.outDir / "frame_poked_separable.png");
+  report["texture_space"] =
+      renderTextureSpaceDemo(*d.surface, o.outDir / "frame_poked_texture_space.png", o.width, o.height);
 
   // Inspection: the poked organ with its shading fields, for ParaView.
   if (auto vtp = writeInspection(*d.surface, o.outDir / "organ_poked.vtp"); !vtp) return vtp.error();

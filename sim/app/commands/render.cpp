@@ -8,6 +8,7 @@
 #include "../pass_timings_json.h"
 #include "command.h"
 #include "output.h"
+#include "render_texture_space.h"
 
 #include "../sss_material.h"
 #include "tissue/context/headless_context.h"
@@ -34,6 +35,7 @@ struct RenderOptions {
   std::string baseColor;
   float scale = 1.0f;  // mm per file unit
   int samples = 4;
+  TsdRenderOptions tsd;  // --method texture-space
 };
 
 Float3 sub(Float3 a, Float3 b) {
@@ -78,8 +80,13 @@ int run(RenderOptions o, const GlobalOptions& global) {
   if (o.normalMap.empty()) o.normalMap = findDataTexture(stem, "normal_map").string();
   if (o.baseColor.empty()) o.baseColor = findDataTexture(stem, "base_color").string();
   if (o.width <= 0 || o.height <= 0) return fail(cmd, "--width and --height must be positive pixels");
+  if (o.method == "texture-space") {
+    o.tsd.mesh = o.mesh, o.tsd.out = o.out, o.tsd.baseColor = o.baseColor;
+    o.tsd.width = o.width, o.tsd.height = o.height, o.tsd.scale = o.scale;
+    return renderTextureSpace(o.tsd, global);
+  }
   if (o.method != "lit" && o.method != "separable") {
-    return fail(cmd, "--method " + o.method + " is not one of lit, separable");
+    return fail(cmd, "--method " + o.method + " is not one of lit, separable, texture-space");
   }
   render::SceneObject object;
   if (o.method == "separable") {
@@ -180,7 +187,8 @@ void registerRenderCommand(CLI::App& app, const GlobalOptions& global, int& exit
   auto opts = std::make_shared<RenderOptions>();
   auto* cmd = app.add_subcommand("render", "render a mesh lit or with separable SSS to a PNG");
   cmd->add_option("--mesh", opts->mesh, "mesh file (OBJ, PLY, OFF, STL; default data/meshes/liver.obj)");
-  cmd->add_option("--method", opts->method, "shading method: lit or separable (screen-space SSS)");
+  cmd->add_option("--method", opts->method,
+                  "shading method: lit, separable (screen-space SSS) or texture-space");
   cmd->add_option("--kernel", opts->kernel,
                   "separable kernel model: svd, preintegrated, guided, manual, deon, jimenez");
   cmd->add_option("--taps", opts->taps, "separable kernel taps per 1D pass (odd, default 17)");
@@ -193,6 +201,17 @@ void registerRenderCommand(CLI::App& app, const GlobalOptions& global, int& exit
   cmd->add_option("--base-color", opts->baseColor, "base colour PNG, sRGB (needs UVs)");
   cmd->add_option("--scale", opts->scale, "mm per file unit (default 1)");
   cmd->add_option("--samples", opts->samples, "MSAA samples (default 4; 0 = off)");
+  cmd->add_option("--gaussians", opts->tsd.gaussians,
+                  "texture-space: skin profile terms, 2, 4 or 6 (default 6)");
+  cmd->add_option("--map-size", opts->tsd.mapSize,
+                  "texture-space: T_max, irradiance map texels (default 1024)");
+  cmd->add_flag(
+      "--no-cull", [opts](std::int64_t) { opts->tsd.cull = false; }, "texture-space: no culled map");
+  cmd->add_flag(
+      "--no-clip", [opts](std::int64_t) { opts->tsd.clip = false; }, "texture-space: no clipped map");
+  cmd->add_flag(
+      "--no-depth-size", [opts](std::int64_t) { opts->tsd.depthSize = false; },
+      "texture-space: no depth-based map size");
   cmd->callback([opts, &global, &exitCode] { exitCode = run(*opts, global); });
 }
 

@@ -1,0 +1,164 @@
+// Texture-space diffusion: the Gaussian chain and the final pass (d'Eon et al. 2007).
+#include "texture_space_passes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "tissue/gl/program.h"
+
+namespace tissue::render {
+
+Result<TextureSpaceDiffusion> TextureSpaceDiffusion::create(const gl::GlApi& gl,
+                                                            const gl::ShaderLibrary& library, int maxSize) {
+  TextureSpaceDiffusion tsd;
+  tsd.m_gl = &gl;
+  auto irradiance = IrradianceMap::create(gl, library, maxSize);
+  if (!irradiance) return irradiance.error();
+  tsd.m_irradiance = std::move(*irradiance);
+  auto blur = gl::buildProgram(gl, library, {"texture_space/fullscreen.vert", "texture_space/blur.frag", {}});
+  if (!blur) return blur.error();
+  auto final = gl::buildProgram(gl, library, {"texture_space/final.vert", "texture_space/final.frag", {}});
+  if (!final) return final.error();
+  tsd.m_blur = std::move(*blur);
+  tsd.m_final = std::move(*final);
+  // The temporary and one map per Gaussian, all T_max^2 RGBA16F.
+  const auto target = [&](gl::Texture& texture, gl::Framebuffer& framebuffer) -> Result<void> {
+    auto t = createFloatTexture(gl, maxSize, GL_RGBA16F);
+    if (!t) return t.error();
+    texture = std::move(*t);
+    framebuffer = gl::Framebuffer::create(gl);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture.id(), 0);
+    if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      return Error{"texture space: a blur framebuffer is incomplete"};
+    return {};
+  };
+  if (auto r = target(tsd.m_temp, tsd.m_tempFramebuffer); !r) return r.error();
+  tsd.m_maps.resize(kMaxTsdGaussians);
+  tsd.m_mapFramebuffers.resize(kMaxTsdGaussians);
+  for (int i = 0; i < kMaxTsdGaussians; ++i)
+    if (auto r = target(tsd.m_maps[std::size_t(i)], tsd.m_mapFramebuffers[std::size_t(i)]); !r)
+      return r.error();
+  tsd.m_emptyVertexArray = gl::VertexArray::create(gl);
+  // Samplers: final pass base colour on unit 0, maps on units 1..8.
+  gl.UseProgram(tsd.m_final.id());
+  gl.Uniform1i(gl.GetUniformLocation(tsd.m_final.id(), "u_baseColor"), 0);
+  for (int i = 0; i < kMaxTsdGaussians; ++i)
+    gl.Uniform1i(gl.GetUniformLocation(tsd.m_final.id(), ("u_maps[" + std::to_string(i) + "]").c_str()),
+                 i + 1);
+  gl.UseProgram(tsd.m_blur.id());
+  gl.Uniform1i(gl.GetUniformLocation(tsd.m_blur.id(), "u_source"), 0);
+  gl.Uniform1i(gl.GetUniformLocation(tsd.m_blur.id(), "u_stretch"), 1);
+  if (auto r = gl::checkGlError(gl, "texture space: create"); !r) return r.error();
+  return tsd;
+}
+
+Result<void> TextureSpaceDiffusion::blur(GLuint source, GLuint target, float sigmaMm, bool horizontal,
+                                         const TextureSpaceDiffusionSettings& settings) {
+  const gl::GlApi& g = *m_gl;
+  const GLuint id = m_blur.id();
+  const int size = m_irradiance.size();
+  const float scale = m_irradiance.scale();
+  g.BindFramebuffer(GL_FRAMEBUFFER, target);
+  g.Viewport(0, 0, size, size);
+  g.UseProgram(id);
+  g.Uniform2f(g.GetUniformLocation(id, "u_direction"), horizontal ? 1.0f : 0.0f, horizontal ? 0.0f : 1.0f);
+  g.Uniform1f(g.GetUniformLocation(id, "u_sigmaMm"), sigmaMm);
+  g.Uniform1f(g.GetUniformLocation(id, "u_mapScale"), scale);
+  g.Uniform1f(g.GetUniformLocation(id, "u_maxCoord"), scale - 0.5f / float(m_irradiance.maxSize()));
+  g.Uniform1i(g.GetUniformLocation(id, "u_skipEmpty"), settings.irradiance.cull ? 1 : 0);
+  const auto taps = gaussianBlurTaps(std::clamp(settings.blurHalfTaps, 1, 8));
+  std::vector<float> offsets, weights;
+  for (const BlurTap& t : taps)
+    offsets.push_back(t.offsetSigma), weights.push_back(t.weight);
+  g.Uniform1i(g.GetUniformLocation(id, "u_tapCount"), GLint(taps.size()));
+  g.Uniform1fv(g.GetUniformLocation(id, "u_tapOffsets"), GLsizei(taps.size()), offsets.data());
+  g.Uniform1fv(g.GetUniformLocation(id, "u_tapWeights"), GLsizei(taps.size()), weights.data());
+  g.ActiveTexture(GL_TEXTURE0);
+  g.BindTexture(GL_TEXTURE_2D, source);
+  g.ActiveTexture(GL_TEXTURE1);
+  g.BindTexture(GL_TEXTURE_2D, m_irradiance.stretch());
+  g.BindVertexArray(m_emptyVertexArray.id());
+  g.DrawArrays(GL_TRIANGLES, 0, 3);
+  return {};
+}
+
+Result<void> TextureSpaceDiffusion::diffuse(GLuint vertexArray, GLsizei indexCount,
+                                            const IrradianceFrame& frame,
+                                            const TextureSpaceDiffusionSettings& settings,
+                                            bool writePositions) {
+  if (settings.gaussians.empty() || int(settings.gaussians.size()) > kMaxTsdGaussians)
+    return Error{"texture space: the profile needs 1 to " + std::to_string(kMaxTsdGaussians) + " Gaussians"};
+  if (auto r = m_irradiance.render(vertexArray, indexCount, frame, settings.irradiance, writePositions); !r)
+    return r;
+  const gl::GlApi& g = *m_gl;
+  g.Disable(GL_DEPTH_TEST);
+  g.Disable(GL_CULL_FACE);
+  g.Disable(GL_BLEND);
+  // Each Gaussian blurs the previous one by the variance it adds (d'Eon: G(v1) * G(v2) = G(v1 + v2)).
+  const auto steps = incrementalVariances(settings.gaussians);
+  GLuint source = m_irradiance.irradiance();
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const float sigma = std::sqrt(steps[i]);
+    if (auto r = blur(source, m_tempFramebuffer.id(), sigma, true, settings); !r) return r;
+    if (auto r = blur(m_temp.id(), m_mapFramebuffers[i].id(), sigma, false, settings); !r) return r;
+    source = m_maps[i].id();
+  }
+  return gl::checkGlError(g, "texture space: convolution");
+}
+
+FinalMaps TextureSpaceDiffusion::chainMaps(const TextureSpaceDiffusionSettings& settings) const {
+  FinalMaps out;
+  out.scale = m_irradiance.scale();
+  for (std::size_t i = 0; i < settings.gaussians.size() && i < m_maps.size(); ++i) {
+    out.maps.push_back(m_maps[i].id());
+    out.weights.push_back(settings.gaussians[i].weight);
+  }
+  return out;
+}
+
+Result<void> TextureSpaceDiffusion::drawFinal(GLuint vertexArray, GLsizei indexCount,
+                                              const IrradianceFrame& frame, const TsdSurface& surface,
+                                              const FinalMaps& maps) {
+  const gl::GlApi& g = *m_gl;
+  const GLuint id = m_final.id();
+  if (maps.maps.empty() || maps.maps.size() > std::size_t(kMaxTsdGaussians) ||
+      maps.weights.size() != maps.maps.size())
+    return Error{"texture space: the final pass needs 1 to 8 maps with one weight each"};
+  g.Enable(GL_DEPTH_TEST);
+  g.DepthFunc(GL_LESS);
+  g.DepthMask(GL_TRUE);
+  g.Enable(GL_CULL_FACE);
+  g.CullFace(GL_BACK);
+  g.FrontFace(GL_CCW);
+  g.UseProgram(id);
+  g.UniformMatrix4fv(g.GetUniformLocation(id, "u_viewProjection"), 1, GL_FALSE,
+                     surface.viewProjection.data());
+  g.Uniform1f(g.GetUniformLocation(id, "u_mapScale"), maps.scale);
+  g.Uniform3f(g.GetUniformLocation(id, "u_offset"), frame.offsetMm.x, frame.offsetMm.y, frame.offsetMm.z);
+  g.Uniform3f(g.GetUniformLocation(id, "u_cameraPosition"), surface.cameraPosition.x,
+              surface.cameraPosition.y, surface.cameraPosition.z);
+  g.Uniform3f(g.GetUniformLocation(id, "u_lightPosition"), frame.lightPosition.x, frame.lightPosition.y,
+              frame.lightPosition.z);
+  g.Uniform3f(g.GetUniformLocation(id, "u_lightRadiance"), frame.lightRadiance.x, frame.lightRadiance.y,
+              frame.lightRadiance.z);
+  g.Uniform1f(g.GetUniformLocation(id, "u_specular"), surface.specular);
+  g.Uniform1f(g.GetUniformLocation(id, "u_shininess"), surface.shininess);
+  g.Uniform1f(g.GetUniformLocation(id, "u_exposure"), surface.exposure);
+  g.Uniform1i(g.GetUniformLocation(id, "u_output"), surface.linearDiffuse ? 1 : 0);
+  g.Uniform1i(g.GetUniformLocation(id, "u_gaussianCount"), GLint(maps.maps.size()));
+  g.Uniform3fv(g.GetUniformLocation(id, "u_weights"), GLsizei(maps.weights.size()), &maps.weights[0].x);
+  g.ActiveTexture(GL_TEXTURE0);
+  g.BindTexture(GL_TEXTURE_2D, surface.baseColor);
+  for (std::size_t i = 0; i < std::size_t(kMaxTsdGaussians); ++i) {
+    g.ActiveTexture(GLenum(GL_TEXTURE1 + i));
+    g.BindTexture(GL_TEXTURE_2D, i < maps.maps.size() ? maps.maps[i] : 0);
+  }
+  g.ActiveTexture(GL_TEXTURE0);
+  g.BindVertexArray(vertexArray);
+  g.DrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
+  return gl::checkGlError(g, "texture space: final pass");
+}
+
+}  // namespace tissue::render

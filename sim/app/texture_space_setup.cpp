@@ -1,0 +1,170 @@
+// Texture-space commands' shared setup: organ with usable UVs, skin Gaussians, CPU reference.
+#include "texture_space_setup.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include "output.h"
+#include "tissue/mesh/deformable_surface.h"
+#include "tissue/mesh/load_mesh.h"
+#include "tissue/mesh/tangent_frames.h"
+#include "tissue/mesh/uv_atlas.h"
+#include "tissue/mesh/vertex_normals.h"
+#include "tissue/optics/kernel_gaussians.h"
+
+namespace tissue::sim_app {
+namespace {
+
+/// Replaces the mesh's render vertices by the atlas's (positions gathered from the welded ones).
+SurfaceMesh applyAtlas(const std::vector<Float3>& positions, const mesh::UvAtlas& atlas) {
+  SurfaceMesh out;
+  for (std::uint32_t v : atlas.originalVertex)
+    out.positions.push_back(positions[v]);
+  out.uvs = atlas.uvs;
+  out.triangles = atlas.triangles;
+  out.geometricIndex = atlas.originalVertex;
+  out.geometricVertexCount = std::uint32_t(positions.size());
+  return out;
+}
+
+double triangleArea(Float3 a, Float3 b, Float3 c) {
+  const double ex = double(b.x - a.x), ey = double(b.y - a.y), ez = double(b.z - a.z);
+  const double fx = double(c.x - a.x), fy = double(c.y - a.y), fz = double(c.z - a.z);
+  return 0.5 * std::hypot(ey * fz - ez * fy, ez * fx - ex * fz, ex * fy - ey * fx);
+}
+
+}  // namespace
+
+Result<TsdOrgan> loadTsdOrgan(const std::filesystem::path& path, float scale) {
+  auto loaded = mesh::loadMesh(path, {.requireUvs = false, .scaleToMm = scale});
+  if (!loaded) return loaded.error();
+  TsdOrgan organ;
+  organ.mesh = std::move(*loaded);
+  SurfaceMesh& m = organ.mesh;
+  if (!m.hasUvs() || !mesh::hasUsableUvs(m.uvs, m.triangles, m.positions.size())) {
+    // No usable UVs: the automatic atlas, computed once on the rest shape.
+    const std::vector<Float3> geo = mesh::geometricPositionsOf(m);
+    auto atlas = mesh::computeUvAtlas(geo, mesh::geometricTrianglesOf(m));
+    if (!atlas) return Error{path.string() + ": " + atlas.error().message};
+    organ.charts = atlas->chartCount;
+    m = applyAtlas(geo, *atlas);
+    organ.atlas = true;
+  }
+  // Normals per geometric vertex (smooth across seams), tangent frames from the UVs.
+  const std::vector<Float3> geo = mesh::geometricPositionsOf(m);
+  std::vector<Float3> geoNormals(m.geometricVertexCount);
+  mesh::computeVertexNormals(geo, mesh::geometricTrianglesOf(m), geoNormals);
+  gatherToRenderVertices(m, geoNormals, organ.normals);
+  organ.tangents.resize(m.positions.size());
+  mesh::computeTangentFrames(m.positions, m.uvs, m.triangles, organ.normals, organ.tangents,
+                             m.geometricIndex);
+  double uv = 0.0, area = 0.0;
+  for (const Triangle& t : m.triangles) {
+    const Float2 a = m.uvs[t[0]], b = m.uvs[t[1]], c = m.uvs[t[2]];
+    uv += 0.5 * std::abs(double(b.x - a.x) * double(c.y - a.y) - double(b.y - a.y) * double(c.x - a.x));
+    area += triangleArea(m.positions[t[0]], m.positions[t[1]], m.positions[t[2]]);
+  }
+  organ.uvDensity = area > 0.0 ? float(std::sqrt(uv / area)) : 0.0f;
+  organ.lo = organ.hi = m.positions.front();
+  for (const Float3& p : m.positions) {
+    organ.lo = {std::min(organ.lo.x, p.x), std::min(organ.lo.y, p.y), std::min(organ.lo.z, p.z)};
+    organ.hi = {std::max(organ.hi.x, p.x), std::max(organ.hi.y, p.y), std::max(organ.hi.z, p.z)};
+  }
+  return organ;
+}
+
+Result<std::vector<render::ProfileGaussian>> skinGaussians(int count) {
+  // Step 1: the six terms from the shared reference table.
+  const auto path = sharedDir() / "reference" / "deon_skin_gaussians.tsv";
+  std::ifstream in(path);
+  if (!in) return Error{"cannot read " + path.string() + "; set TISSUE_SHARED_DIR to the shared folder"};
+  std::vector<render::ProfileGaussian> six;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line.starts_with("variance")) continue;
+    std::istringstream row(line);
+    render::ProfileGaussian g;
+    if (!(row >> g.varianceMm2 >> g.weight.x >> g.weight.y >> g.weight.z))
+      return Error{path.string() + ": a row is not 'variance w_R w_G w_B': " + line};
+    six.push_back(g);
+  }
+  if (six.size() != 6) return Error{path.string() + ": expected 6 Gaussians"};
+  if (count == 6) return six;
+  if (count != 2 && count != 4) return Error{"--gaussians must be 2, 4 or 6"};
+  // Step 2: fewer terms fitted to the six-term profile by optics::fitGaussians (branch
+  // kernels: Nelder-Mead over the shared variances, non-negative weights per channel).
+  optics::RadialProfileRgb profile;
+  profile.name = "d'Eon skin";
+  for (int i = 0; i <= 4000; ++i) {
+    const double r = 0.005 * i;
+    const Float3 v = render::evaluateGaussianSum(six, float(r));
+    profile.radiusMm.push_back(r);
+    profile.value[0].push_back(double(v.x)), profile.value[1].push_back(double(v.y));
+    profile.value[2].push_back(double(v.z));
+  }
+  auto sum = optics::fitGaussians(profile, count);
+  if (!sum) return sum.error();
+  std::vector<render::ProfileGaussian> fit;
+  for (std::size_t i = 0; i < sum->varianceMm2.size(); ++i)
+    fit.push_back({float(sum->varianceMm2[i]),
+                   {float(sum->weights[0][i]), float(sum->weights[1][i]), float(sum->weights[2][i])}});
+  return fit;
+}
+
+render::RadialProfileTable skinProfileTable(const std::vector<render::ProfileGaussian>& six,
+                                            float& cutoffMm) {
+  float widest = 0.0f;
+  for (const auto& g : six)
+    widest = std::max(widest, g.varianceMm2);
+  cutoffMm = 3.5f * std::sqrt(widest);  // R at 3.5 sigma of the widest term: < 0.3% of its peak
+  render::RadialProfileTable table;
+  for (int i = 0; i <= 4000; ++i) {
+    table.radiusMm.push_back(cutoffMm * float(i) / 4000.0f);
+    table.value.push_back(render::evaluateGaussianSum(six, table.radiusMm.back()));
+  }
+  return table;
+}
+
+Result<Image8> referenceImage(render::TextureSpaceRenderer& renderer, const render::Scene& scene, int width,
+                              int height, const render::RadialProfileTable& profile, float cutoffMm,
+                              Float3 offsetMm) {
+  auto maps = renderer.readIrradiance();
+  if (!maps) return maps.error();
+  if (maps->size != maps->maxSize) return Error{"the reference needs the full-size (unoptimised) map"};
+  // Samples: every drawn texel, its surface area |dP/du| |dP/dv| / T^2 (mm^2; the atlas is
+  // conformal, so the two directions are near orthogonal).
+  render::SurfaceSamples samples;
+  std::vector<std::size_t> texel;
+  const double t2 = double(maps->size) * double(maps->size);
+  for (std::size_t t = 0; t < maps->irradiance.texels.size(); ++t) {
+    const Float4 e = maps->irradiance.texels[t], p = maps->position.texels[t], s = maps->stretch.texels[t];
+    if (e.w <= 0.0f) continue;
+    samples.positionMm.push_back({p.x, p.y, p.z});
+    samples.areaMm2.push_back(float(double(s.x) * double(s.y) / t2));
+    samples.irradiance.push_back({e.x, e.y, e.z});
+    texel.push_back(t);
+  }
+  const auto m = render::convolveOverSurface(samples, samples.positionMm, profile, cutoffMm);
+  render::FloatMap diffused{maps->size, maps->size, std::vector<Float4>(maps->irradiance.texels.size())};
+  for (std::size_t i = 0; i < texel.size(); ++i)
+    diffused.texels[texel[i]] = {m[i].x, m[i].y, m[i].z, 1.0f};
+  return renderer.renderWithDiffusedMap(scene, width, height, diffused, offsetMm);
+}
+
+double imageRms(const Image8& a, const Image8& b) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i + 3 < a.pixels.size() && i + 3 < b.pixels.size(); i += std::size_t(a.channels)) {
+    for (int c = 0; c < 3; ++c) {
+      const double d = double(a.pixels[i + std::size_t(c)]) - double(b.pixels[i + std::size_t(c)]);
+      sum += d * d;
+      ++n;
+    }
+  }
+  return n ? std::sqrt(sum / double(n)) : 0.0;
+}
+
+}  // namespace tissue::sim_app

@@ -1,0 +1,229 @@
+// Texture-space diffusion on llvmpipe: golden image, each optimisation against the unoptimised
+// path, energy of a uniformly lit patch, the stretch map of a rest and a stretched patch, the
+// depth-based size and the culled and clipped maps on known geometry.
+#include <cmath>
+#include <numbers>
+
+#include "gl_test_support.h"
+#include "image_compare.h"
+#include "test_scene.h"
+#include "tissue/render/texture_space.h"
+
+namespace tissue::test {
+namespace {
+
+using render::TextureSpaceRenderer;
+using render::TsdSettings;
+
+constexpr int kMapSize = 512;
+
+/// d'Eon & Luebke's skin Gaussians (../shared/reference/deon_skin_gaussians.tsv).
+std::vector<render::ProfileGaussian> deonSkin() {
+  return {{0.0064f, {0.233f, 0.455f, 0.649f}}, {0.0484f, {0.100f, 0.336f, 0.344f}},
+          {0.187f, {0.118f, 0.198f, 0.0f}},    {0.567f, {0.113f, 0.007f, 0.007f}},
+          {1.99f, {0.358f, 0.004f, 0.0f}},     {7.41f, {0.078f, 0.0f, 0.0f}}};
+}
+
+/// Texels per mm of a UV map at `size` texels: sqrt(UV area / surface area) * size.
+float texelsPerMm(const SphereMesh& m, int size) {
+  double uv = 0.0, area = 0.0;
+  for (const Triangle& t : m.triangles) {
+    const Float2 a = m.uvs[t[0]], b = m.uvs[t[1]], c = m.uvs[t[2]];
+    uv += 0.5 * std::abs(double(b.x - a.x) * double(c.y - a.y) - double(b.y - a.y) * double(c.x - a.x));
+    const Float3 p = m.positions[t[0]], q = m.positions[t[1]], r = m.positions[t[2]];
+    const double ex = q.x - p.x, ey = q.y - p.y, ez = q.z - p.z, fx = r.x - p.x, fy = r.y - p.y,
+                 fz = r.z - p.z;
+    area += 0.5 * std::hypot(ey * fz - ez * fy, ez * fx - ex * fz, ex * fy - ey * fx);
+  }
+  return float(std::sqrt(uv / area)) * float(size);
+}
+
+/// A flat sx x sy mm patch in z = 0 facing +z, uv = (x / sx, y / sy) inset by 2%.
+SphereMesh makePatch(int n, float sx, float sy, float stretchX = 1.0f) {
+  SphereMesh m;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const float u = float(i) / float(n), v = float(j) / float(n);
+      m.positions.push_back({(u - 0.5f) * sx * stretchX, (v - 0.5f) * sy, 0.0f});
+      m.normals.push_back({0.0f, 0.0f, 1.0f});
+      m.tangents.push_back({1.0f, 0.0f, 0.0f, 1.0f});
+      m.uvs.push_back({0.02f + 0.96f * u, 0.02f + 0.96f * v});
+    }
+  const auto id = [n](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return m;
+}
+
+TsdSettings settings(bool optimised) {
+  TsdSettings s;
+  s.gaussians = deonSkin();
+  s.cull = s.clip = s.depthSize = optimised;
+  return s;
+}
+
+struct Fixture {
+  std::unique_ptr<context::GlContext> context;
+  TextureSpaceRenderer renderer;
+};
+
+class TextureSpaceTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    auto context = createContext(Backend::Egl);
+    if (!context) GTEST_SKIP() << "egl context unavailable: " << context.error().message;
+    m_context = std::move(*context);
+    render::TextureSpaceRendererSettings rs;
+    rs.maxMapSize = kMapSize;
+    auto r = TextureSpaceRenderer::create(m_context->procAddressFunction(), rs);
+    ASSERT_TRUE(r) << r.error().message;
+    m_renderer = std::make_unique<TextureSpaceRenderer>(std::move(*r));
+  }
+  std::unique_ptr<context::GlContext> m_context;
+  std::unique_ptr<TextureSpaceRenderer> m_renderer;
+};
+
+TEST_F(TextureSpaceTest, SphereMatchesGoldenAndOptimisationsStayClose) {
+  const SphereMesh sphere = makeSphere(40.0f, 48, 96);
+  ASSERT_TRUE(m_renderer->setMesh(sphere.arrays(), texelsPerMm(sphere, kMapSize)));
+  ASSERT_TRUE(m_renderer->setBaseColor(makeBaseColor(256)));
+  const render::Scene scene = goldenScene();
+  auto plain = m_renderer->renderImage(scene, 256, 256, settings(false));
+  ASSERT_TRUE(plain) << plain.error().message;
+  const std::string failure = checkGolden("texture_space_sphere", *plain);
+  EXPECT_TRUE(failure.empty()) << failure;
+  // Each optimisation alone and all three, against the unoptimised image: mean difference under
+  // 1 level and under 1% of pixels off by more than 8 levels (the culled border and the smaller
+  // map move the diffusion a little at silhouettes).
+  for (int which = 0; which < 4; ++which) {
+    TsdSettings s = settings(false);
+    s.cull = which == 0 || which == 3;
+    s.clip = which == 1 || which == 3;
+    s.depthSize = which == 2 || which == 3;
+    auto image = m_renderer->renderImage(scene, 256, 256, s);
+    ASSERT_TRUE(image) << image.error().message;
+    const ImageDiff d = compareImages(*image, *plain, 8);
+    EXPECT_LT(d.meanDiff, 1.0) << "optimisation " << which;
+    EXPECT_LT(d.fractionOver, 0.01) << "optimisation " << which;
+  }
+}
+
+TEST_F(TextureSpaceTest, UniformlyLitPatchKeepsItsMeanBrightness) {
+  const SphereMesh patch = makePatch(40, 60.0f, 60.0f);
+  ASSERT_TRUE(m_renderer->setMesh(patch.arrays(), 0.96f * kMapSize / 60.0f));
+  render::Scene scene = goldenScene();
+  scene.camera.eye = {0.0f, 0.0f, 150.0f};
+  scene.lights[0].positionMm = {0.0f, 0.0f, 1e6f};  // N.L = 1 everywhere: uniform irradiance
+  TsdSettings s = settings(false);
+  ASSERT_TRUE(m_renderer->renderImage(scene, 64, 64, s));
+  auto irradiance = m_renderer->readIrradiance();
+  auto diffused = m_renderer->readDiffused(s);
+  ASSERT_TRUE(irradiance && diffused);
+  double e = 0.0, m = 0.0, worst = 0.0;
+  int covered = 0;
+  for (std::size_t t = 0; t < diffused->texels.size(); ++t) {
+    if (irradiance->irradiance.texels[t].w <= 0.0f) continue;
+    const Float4 in = irradiance->irradiance.texels[t], out = diffused->texels[t];
+    e += double(in.x), m += double(out.x), ++covered;
+    worst = std::max(worst, std::abs(double(out.x) / double(in.x) - 1.0));
+  }
+  ASSERT_GT(covered, kMapSize * kMapSize / 2);
+  EXPECT_NEAR(m / e, 1.0, 0.005);  // the profile's weights sum to 1 per channel
+  EXPECT_LT(worst, 0.01);          // also at the patch's border (normalised convolution)
+}
+
+TEST_F(TextureSpaceTest, StretchMapMatchesRestAndStretchedPatch) {
+  for (float stretchX : {1.0f, 1.5f}) {
+    const SphereMesh patch = makePatch(10, 40.0f, 20.0f, stretchX);
+    ASSERT_TRUE(m_renderer->setMesh(patch.arrays(), 10.0f));
+    render::Scene scene = goldenScene();
+    ASSERT_TRUE(m_renderer->renderImage(scene, 32, 32, settings(false)));
+    auto maps = m_renderer->readIrradiance();
+    ASSERT_TRUE(maps);
+    // mm per UV unit: the 40 x 20 mm patch spans 0.96 of the map each way.
+    const double expectU = 40.0 * double(stretchX) / 0.96, expectV = 20.0 / 0.96;
+    int checked = 0;
+    for (std::size_t t = 0; t < maps->stretch.texels.size(); ++t) {
+      if (maps->irradiance.texels[t].w <= 0.0f) continue;
+      EXPECT_NEAR(maps->stretch.texels[t].x, expectU, expectU * 2e-3) << t;
+      EXPECT_NEAR(maps->stretch.texels[t].y, expectV, expectV * 2e-3) << t;
+      if (++checked > 2000) break;
+    }
+    EXPECT_GT(checked, 1000);
+  }
+}
+
+TEST_F(TextureSpaceTest, DepthSizeCullAndClipOnKnownGeometry) {
+  const SphereMesh sphere = makeSphere(40.0f, 48, 96);
+  const float density = texelsPerMm(sphere, kMapSize);
+  ASSERT_TRUE(m_renderer->setMesh(sphere.arrays(), density));
+  render::Scene scene = goldenScene();
+  scene.camera.eye = {0.0f, 0.0f, 400.0f};
+  scene.camera.farMm = 1000.0f;
+  // Depth-based size: eq. 3-4 with d to the nearest corner of [-40, 40]^3 from (0, 0, 400).
+  TsdSettings s = settings(false);
+  s.depthSize = true;
+  ASSERT_TRUE(m_renderer->renderImage(scene, 200, 200, s));
+  auto maps = m_renderer->readIrradiance();
+  ASSERT_TRUE(maps);
+  const float dRef = m_renderer->referenceDistance(scene, 200, s);
+  const float d = std::sqrt(360.0f * 360.0f + 2.0f * 40.0f * 40.0f);
+  EXPECT_EQ(maps->size, render::irradianceMapSize(render::irradianceMapScale(d, dRef), kMapSize));
+  EXPECT_LT(maps->size, kMapSize);
+  // Culled: the area within 105 degrees of the view direction, (1 + cos 75 deg... ) = (1 + 0.2588) / 2
+  // of a sphere seen from far; from 10 radii a little less.
+  s = settings(false);
+  s.cull = true;
+  ASSERT_TRUE(m_renderer->renderImage(scene, 200, 200, s));
+  maps = m_renderer->readIrradiance();
+  ASSERT_TRUE(maps);
+  double visible = 0.0, drawn = 0.0;
+  for (std::size_t t = 0; t < maps->irradiance.texels.size(); ++t) {
+    if (maps->position.texels[t].w <= 0.0f) continue;
+    drawn += 1.0;
+    visible += maps->irradiance.texels[t].w > 0.0f ? 1.0 : 0.0;
+  }
+  // Texels are not equal-area on a UV sphere: weight by the known latitude instead is overkill;
+  // the sphere's seen hemisphere plus 15 degrees is between a half and (1 + 0.2588) / 2.
+  EXPECT_GT(visible / drawn, 0.5);
+  EXPECT_LT(visible / drawn, 0.70);
+  // Clipped: a camera close to the sphere's +x side sees only part of it. Positions come from
+  // the unclipped map (clipped texels are not drawn at all).
+  scene.camera.eye = {60.0f, 0.0f, 60.0f};
+  scene.camera.target = {60.0f, 0.0f, 0.0f};
+  scene.camera.nearMm = 1.0f;
+  ASSERT_TRUE(m_renderer->renderImage(scene, 200, 200, settings(false)));
+  auto positions = m_renderer->readIrradiance();
+  ASSERT_TRUE(positions);
+  s = settings(false);
+  s.clip = true;
+  ASSERT_TRUE(m_renderer->renderImage(scene, 200, 200, s));
+  maps = m_renderer->readIrradiance();
+  ASSERT_TRUE(maps);
+  int kept = 0, wrong = 0, total = 0;
+  const float tanHalf = std::tan(20.0f * std::numbers::pi_v<float> / 180.0f);
+  for (std::size_t t = 0; t < maps->irradiance.texels.size(); ++t) {
+    const Float4 p = positions->position.texels[t];
+    if (p.w <= 0.0f) continue;
+    ++total;
+    // Eye space of this camera: x = p.x - 60, y = p.y, z = p.z - 60 (looking down -z).
+    const float z = 60.0f - p.z;
+    const bool inside =
+        z > 1.0f && std::abs(p.x - 60.0f) <= z * tanHalf * 0.98f && std::abs(p.y) <= z * tanHalf * 0.98f;
+    const bool outside =
+        z < 0.9f || std::abs(p.x - 60.0f) >= z * tanHalf * 1.02f || std::abs(p.y) >= z * tanHalf * 1.02f;
+    const bool keptHere = maps->irradiance.texels[t].w > 0.0f;
+    kept += keptHere;
+    wrong += (inside && !keptHere) || (outside && keptHere);
+  }
+  EXPECT_GT(total, 1000);
+  EXPECT_LT(kept, total / 2);  // most of the sphere is off screen
+  EXPECT_GT(kept, 0);
+  EXPECT_LT(wrong, total / 200);
+}
+
+}  // namespace
+}  // namespace tissue::test
