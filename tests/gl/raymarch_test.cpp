@@ -1,5 +1,6 @@
 // Ray-marched subsurface texture mapping on the GPU (shaders/raymarch/) against its CPU model
 // (tissue::subsurface, plane mode), golden images, and a local poke on the data patch.
+#include <cstdio>
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -119,6 +120,84 @@ TEST_P(RayMarchTest, ShaderMatchesItsCpuModelAndTheGolden) {
   EXPECT_LT(d.fractionOver, 0.02);
   const std::string failure = checkGolden(std::string("raymarch_patch_") + backendName(GetParam()), *gpu);
   EXPECT_TRUE(failure.empty()) << failure;
+}
+
+// Pushes the geometric vertices within `radiusMm` of the site along -normal, up to `depthMm`
+// at the site with a cosine falloff, and updates the surface (planes re-fitted incrementally).
+void poke(PatchScene& p, float radiusMm, float depthMm) {
+  const auto rest = p.surface->geometricRestPositions();
+  std::vector<Float3> normals(rest.size()), positions(rest.begin(), rest.end());
+  mesh::computeVertexNormals(rest, p.surface->geometricTriangles(), normals);
+  const glm::vec3 site(rest[p.site].x, rest[p.site].y, rest[p.site].z);
+  for (std::size_t i = 0; i < rest.size(); ++i) {
+    const float d = glm::distance(glm::vec3(rest[i].x, rest[i].y, rest[i].z), site);
+    if (d >= radiusMm) continue;
+    const float w = depthMm * 0.5f * (1.0f + std::cos(3.14159265f * d / radiusMm));
+    positions[i] = {rest[i].x - w * normals[i].x, rest[i].y - w * normals[i].y, rest[i].z - w * normals[i].z};
+  }
+  p.surface->update(positions);
+}
+
+Result<void> upload(render::RayMarchRenderer& r, const mesh::DeformableSurface& s,
+                    std::span<const Float4> planes) {
+  return r.updateMesh(s.positions(), s.normals(), s.tangents(), planes);
+}
+
+TEST_P(RayMarchTest, APokeChangesTheImageOnlyAroundItAndMatchesAFullRefit) {
+  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  PatchScene p = loadPatch();
+  auto renderer = makeRenderer(p, *context);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  const render::RayMarchSettings s = testSettings();
+  const auto lights = p.gpuLights();
+  auto before = renderer->renderImage(p.camera, lights, s, kWidth, kHeight);
+  ASSERT_TRUE(before) << before.error().message;
+  const std::vector<Float4> restPlanes(p.surface->planes().begin(), p.surface->planes().end());
+  // Step 1: poke 3 mm deep over a radius of 8 mm; only the poked planes are re-fitted.
+  constexpr float kRadiusMm = 8.0f;
+  poke(p, kRadiusMm, 3.0f);
+  ASSERT_TRUE(upload(*renderer, *p.surface, p.surface->planes()));
+  auto after = renderer->renderImage(p.camera, lights, s, kWidth, kHeight);
+  ASSERT_TRUE(after) << after.error().message;
+  // Step 2: every changed pixel lies near the poke. Reach: the poke radius, plus the plane
+  // sphere (r = -ln(0.01) / 1.6 = 2.9 mm), plus how far a march and its light paths reach
+  // sideways (a few mm), plus the poke depth: 16 mm around the site, projected.
+  const glm::mat4 vp = glm::perspective(glm::radians(p.camera.verticalFovDeg), float(kWidth) / kHeight,
+                                        p.camera.nearMm, p.camera.farMm) *
+                       glm::lookAt(glm::vec3(p.camera.eye.x, p.camera.eye.y, p.camera.eye.z),
+                                   glm::vec3(p.camera.target.x, p.camera.target.y, p.camera.target.z),
+                                   glm::vec3(p.camera.up.x, p.camera.up.y, p.camera.up.z));
+  const Float3 c = p.surface->geometricRestPositions()[p.site];
+  const glm::vec4 clip = vp * glm::vec4(c.x, c.y, c.z, 1.0f);
+  const glm::vec2 centre((clip.x / clip.w * 0.5f + 0.5f) * kWidth, (0.5f - clip.y / clip.w * 0.5f) * kHeight);
+  const float reachPx =
+      16.0f / (clip.w * std::tan(glm::radians(p.camera.verticalFovDeg) * 0.5f)) * kHeight * 0.5f;
+  int changed = 0, outside = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      int diff = 0;
+      for (int k = 0; k < 3; ++k)
+        diff = std::max(diff, std::abs(after->at(x, y)[k] - before->at(x, y)[k]));
+      if (diff <= 1) continue;
+      ++changed;
+      // The oblique view squeezes the region vertically: a circle of the full radius contains it.
+      if (glm::distance(glm::vec2(x + 0.5f, y + 0.5f), centre) > reachPx) ++outside;
+    }
+  std::printf("[ poke ] %d of %d pixels changed, all within %.1f px of the site\n", changed, kWidth * kHeight,
+              double(reachPx));
+  EXPECT_GT(changed, 100) << "the poke must show";
+  EXPECT_EQ(outside, 0) << "pixels changed farther than 16 mm from the poke (reach " << reachPx << " px)";
+  // Step 3: planes re-fitted from scratch give the same image, bit for bit.
+  p.surface->refitAllPlanes();
+  ASSERT_TRUE(upload(*renderer, *p.surface, p.surface->planes()));
+  auto refit = renderer->renderImage(p.camera, lights, s, kWidth, kHeight);
+  ASSERT_TRUE(refit) << refit.error().message;
+  EXPECT_EQ(compareImages(*refit, *after, 0).maxDiff, 0);
+  // Step 4: the planes matter: keeping the rest planes on the poked mesh gives another image.
+  ASSERT_TRUE(upload(*renderer, *p.surface, restPlanes));
+  auto stale = renderer->renderImage(p.camera, lights, s, kWidth, kHeight);
+  ASSERT_TRUE(stale) << stale.error().message;
+  EXPECT_GT(compareImages(*stale, *after, 0).maxDiff, 2);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, RayMarchTest, ::testing::Values(Backend::Egl, Backend::OsMesa),
