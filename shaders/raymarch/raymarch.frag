@@ -25,10 +25,16 @@ uniform float u_depthResolution;  // mm, wanted depth step
 uniform float u_texelsPerStep;    // wanted sideways step in texels (or pixels)
 uniform float u_texelMm;          // mm per texel of the subsurface map
 uniform float u_pixelAngle;       // radians per pixel, 2 tan(fov / 2) / height
+uniform float u_cutoff;           // round-trip transmittance where the adaptive march stops
+uniform float u_sigmaMin;         // smallest extinction of any layer and channel, mm^-1
 
 layout(location = 0) out vec4 o_color;
 
-int adaptiveSamples(Frame f) {
+// Adaptive quality, as subsurface::adaptiveMarch: march only as deep as light returns from
+// (round-trip transmittance above u_cutoff), as finely as depth and footprint need.
+int adaptiveSamples(inout Frame f) {
+  float roundTrip = -log(u_cutoff) / (u_sigmaMin * (1.0 + f.cosDepth));
+  f.tMax = min(f.tMax, roundTrip);
   float depthMm = f.tMax * f.cosDepth;
   float lateralMm = f.tMax * sqrt(max(1.0 - f.cosDepth * f.cosDepth, 0.0));
   float pixelMm = distance(u_cameraPosition, f.P) * u_pixelAngle / max(dot(f.Np, f.wo), 0.1);

@@ -115,6 +115,7 @@ TEST_P(RayMarchTest, ShaderMatchesItsCpuModelAndTheGolden) {
   const Image8 cpuImage = subsurface::toDisplay(cpu, s.exposure, s.background);
   // Same model, same jitter: only float rounding and rasterisation at silhouettes differ.
   const double rms = subsurface::displayRms(*gpu, cpuImage, cpu.covered);
+  std::printf("[ model ] GPU vs CPU rms %.5f\n", rms);
   EXPECT_LT(rms, 0.01) << "GPU and CPU ray march disagree";
   const ImageDiff d = compareImages(*gpu, cpuImage, 6);
   EXPECT_LT(d.fractionOver, 0.02);

@@ -87,7 +87,9 @@ RadianceImage renderSingleScatteringCpu(const MeshView& mesh, const LayerStack& 
         if (settings.adaptive) {
           const double cosView = std::max(double(glm::dot(d3(p.normal), -dir)), 0.1);
           const float pixelMm = float(hit->t * pixelAngle / cosView);
-          march.samples = adaptiveSampleCount(p, stack, march, settings.adaptiveSettings, pixelMm);
+          const AdaptiveChoice choice = adaptiveMarch(p, stack, march, settings.adaptiveSettings, pixelMm);
+          march.samples = choice.samples;
+          march.maxLengthMm = choice.lengthMm;
         }
         const float jitter = settings.jitter ? pixelJitter(unsigned(x), unsigned(y), settings.seed) : 0.5f;
         const MarchResult r = marchSingleScattering(p, stack, lights, march, jitter,

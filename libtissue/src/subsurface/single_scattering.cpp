@@ -83,6 +83,14 @@ dvec3 reducedIntensity(const Frame& f, const LayerStack& stack, const Boundaries
   return glm::exp(-lightOpticalDepth(stack, atM, atK, KM, cosTheta));
 }
 
+// Smallest extinction of any layer and channel, mm^-1 (the slowest attenuation).
+double sigmaMin(const LayerStack& stack) {
+  double sigma = 1e30;
+  for (const LayerCoefficients& l : stack.layers)
+    sigma = std::min({sigma, double(l.sigma_t.x), double(l.sigma_t.y), double(l.sigma_t.z)});
+  return sigma;
+}
+
 Frame makeFrame(const ShadingPoint& p, const LayerStack& stack, const MarchSettings& s) {
   Frame f;
   f.P = d3(p.position);
@@ -99,12 +107,9 @@ Frame makeFrame(const ShadingPoint& p, const LayerStack& stack, const MarchSetti
   // stop there anyway, so the samples go where light still returns).
   const double cosView = std::max(glm::dot(f.Ns, f.wo), double(s.minCosView));
   f.tMax = double(s.depthMaxMm) / cosView;
-  if (s.attenuationThreshold > 0.0f) {
-    double sigmaMin = 1e30;
-    for (const LayerCoefficients& l : stack.layers)
-      sigmaMin = std::min({sigmaMin, double(l.sigma_t.x), double(l.sigma_t.y), double(l.sigma_t.z)});
-    f.tMax = std::min(f.tMax, -std::log(double(s.attenuationThreshold)) / sigmaMin);
-  }
+  if (s.attenuationThreshold > 0.0f)
+    f.tMax = std::min(f.tMax, -std::log(double(s.attenuationThreshold)) / sigmaMin(stack));
+  f.tMax = std::min(f.tMax, double(s.maxLengthMm));
   f.cosDepth = std::max(glm::dot(f.Np, f.wo), 0.0);
   return f;
 }
@@ -162,16 +167,19 @@ float pixelJitter(unsigned x, unsigned y, unsigned seed) {
   return float(pcg(x + pcg(y + pcg(seed))) >> 8) * (1.0f / 16777216.0f);
 }
 
-int adaptiveSampleCount(const ShadingPoint& point, const LayerStack& stack, const MarchSettings& march,
-                        const AdaptiveSettings& adaptive, float pixelMm) {
+AdaptiveChoice adaptiveMarch(const ShadingPoint& point, const LayerStack& stack, const MarchSettings& march,
+                             const AdaptiveSettings& adaptive, float pixelMm) {
   const Frame f = makeFrame(point, stack, march);
-  // Depth the march covers, and how far it drifts sideways in texture space.
-  const double depthMm = f.tMax * f.cosDepth;
-  const double lateralMm = f.tMax * std::sqrt(std::max(1.0 - f.cosDepth * f.cosDepth, 0.0));
+  // Length: where the round trip has attenuated light below the cutoff.
+  const double roundTrip = -std::log(double(adaptive.cutoff)) / (sigmaMin(stack) * (1.0 + f.cosDepth));
+  const double length = std::min(f.tMax, roundTrip);
+  // Count: the depth it covers, and how far it drifts sideways in texture space.
+  const double depthMm = length * f.cosDepth;
+  const double lateralMm = length * std::sqrt(std::max(1.0 - f.cosDepth * f.cosDepth, 0.0));
   const double texelMm = stack.maps.width > 0 ? 1.0 / (f.uvPerMm * stack.maps.width) : 1e30;
   const double stepMm = double(adaptive.texelsPerStep) * std::max(texelMm, double(pixelMm));
   const double want = std::max(depthMm / double(adaptive.depthResolutionMm), lateralMm / stepMm);
-  return std::clamp(int(std::ceil(want)), adaptive.minSamples, adaptive.maxSamples);
+  return {std::clamp(int(std::ceil(want)), adaptive.minSamples, adaptive.maxSamples), float(length)};
 }
 
 }  // namespace tissue::subsurface

@@ -56,7 +56,8 @@ struct RayMarchSettings {
   bool adaptive = false;               ///< per-pixel count from view angle, depth and footprint
   int minSamples = 4;                  ///< adaptive floor
   int maxSamples = 100;                ///< adaptive ceiling
-  float depthResolutionMm = 0.12f;     ///< adaptive: wanted depth step, mm
+  float depthResolutionMm = 0.06f;     ///< adaptive: wanted depth step, mm
+  float cutoff = 0.03f;                ///< adaptive: round-trip transmittance where the march stops
   float texelsPerStep = 1.5f;          ///< adaptive: wanted sideways step, texels or pixels
   bool showSamples = false;            ///< write samples / 100 as grey instead of radiance
   float exposure =

@@ -41,8 +41,9 @@ struct MarchSettings {
   int samples = 50;         ///< samples along P..M_max (Algorithm 1's numberofsamples)
   float depthMaxMm = 3.0f;  ///< Depth_max of eq. 15, mm, measured along N_S
   float attenuationThreshold =
-      1e-3f;                ///< stop once exp(-tau_PM) * max reduced light falls below it (0: never)
-  float minCosView = 0.1f;  ///< lower clamp of N_S . omega_out in eq. 15 (grazing views)
+      1e-3f;                  ///< stop once exp(-tau_PM) * max reduced light falls below it (0: never)
+  float minCosView = 0.1f;    ///< lower clamp of N_S . omega_out in eq. 15 (grazing views)
+  float maxLengthMm = 1e30f;  ///< mm, upper bound of |PM_max| (adaptive quality shortens it)
 };
 
 /// The result for one point.
@@ -63,19 +64,29 @@ MarchResult marchSingleScattering(const ShadingPoint& point, const LayerStack& s
 /// uniform number in [0, 1). The shader computes the same bits (shaders/raymarch/march.glsl).
 float pixelJitter(unsigned x, unsigned y, unsigned seed = 0);
 
-/// Adaptive quality: how many samples a point needs (docs/DECISIONS.md). Enough that the depth
-/// step stays below `depthResolutionMm` over the depth light reaches, and the sideways step in
-/// texture space stays below the larger of a texel and the pixel's footprint `pixelMm` (mm);
-/// clamped to [minSamples, maxSamples].
+/// Adaptive quality (docs/DECISIONS.md): per point, march only as deep as light still returns
+/// from, and only as finely as the layers and the pixel need.
+/// - Length: light scattered at distance t along the viewing ray has crossed at least
+///   sigma_min t (1 + cos) optical depth (down and back up); beyond transmittance `cutoff` the
+///   march stops (never beyond eq. 15's M_max).
+/// - Count: enough that the depth step stays below `depthResolutionMm` and the sideways step
+///   in texture space below the larger of a texel and the pixel's footprint `pixelMm` (mm).
 struct AdaptiveSettings {
   int minSamples = 4;               ///< floor
   int maxSamples = 100;             ///< ceiling (the full-quality count)
-  float depthResolutionMm = 0.12f;  ///< wanted depth step, mm
+  float depthResolutionMm = 0.06f;  ///< wanted depth step, mm
   float texelsPerStep = 1.5f;       ///< wanted sideways step, texels (or pixels, whichever is larger)
+  float cutoff = 0.03f;             ///< round-trip transmittance below which the march stops, 0..1
 };
 
-/// The adaptive sample count at `point` whose pixel covers `pixelMm` mm of surface.
-int adaptiveSampleCount(const ShadingPoint& point, const LayerStack& stack, const MarchSettings& march,
-                        const AdaptiveSettings& adaptive, float pixelMm);
+/// The adaptive choice at one point.
+struct AdaptiveChoice {
+  int samples = 0;        ///< samples to march
+  float lengthMm = 0.0f;  ///< |PM_max| to march over, mm (set MarchSettings::maxLengthMm to it)
+};
+
+/// The adaptive sample count and march length at `point`, whose pixel covers `pixelMm` mm.
+AdaptiveChoice adaptiveMarch(const ShadingPoint& point, const LayerStack& stack, const MarchSettings& march,
+                             const AdaptiveSettings& adaptive, float pixelMm);
 
 }  // namespace tissue::subsurface

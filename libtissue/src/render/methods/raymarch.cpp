@@ -86,6 +86,8 @@ struct RayMarchRenderer::Impl {
     u.set("u_maxSamples", std::clamp(s.maxSamples, 1, 256));
     u.set("u_depthResolution", s.depthResolutionMm);
     u.set("u_texelsPerStep", s.texelsPerStep);
+    u.set("u_cutoff", s.cutoff);
+    u.set("u_sigmaMin", sigmaMin);
     u.set("u_texelMm", 1.0f / (material.uvPerMm * float(texelsWide)));
     u.set("u_pixelAngle", 2.0f * std::tan(glm::radians(camera.verticalFovDeg) * 0.5f) / float(height));
     // Lights.
