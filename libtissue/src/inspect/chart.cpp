@@ -1,0 +1,147 @@
+// Charts through VTK's chart module. Debian's VTK 9.1 renders only through X (no EGL/OSMesa
+// build), so the render window gets a Display* from XDisplay: $DISPLAY or a private Xvfb.
+#include "tissue/inspect/chart.h"
+
+#include <vtkAxis.h>
+#include <vtkChartLegend.h>
+#include <vtkChartXY.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkDoubleArray.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkPlot.h>
+#include <vtkPlotLine.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkTable.h>
+#include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "tissue/core/atomic_file.h"
+#include "x_display.h"
+
+namespace tissue::inspect {
+namespace {
+
+/// Tableau 10: distinguishable on white and for the common colour-vision deficiencies.
+constexpr std::array<std::array<unsigned char, 3>, 10> kPalette{{{31, 119, 180},
+                                                                 {255, 127, 14},
+                                                                 {44, 160, 44},
+                                                                 {214, 39, 40},
+                                                                 {148, 103, 189},
+                                                                 {140, 86, 75},
+                                                                 {227, 119, 194},
+                                                                 {127, 127, 127},
+                                                                 {188, 189, 34},
+                                                                 {23, 190, 207}}};
+
+Result<void> validate(const std::filesystem::path& png, const ChartSettings& settings,
+                      std::span<const ChartSeries> series) {
+  const std::string where = "chart " + png.string() + ": ";
+  if (settings.widthPx < 64 || settings.widthPx > 8192 || settings.heightPx < 64 || settings.heightPx > 8192)
+    return Error{where + "size " + std::to_string(settings.widthPx) + "x" +
+                 std::to_string(settings.heightPx) +
+                 " px is outside 64..8192; pass a sensible ChartSettings::widthPx/heightPx"};
+  if (series.empty()) return Error{where + "no series to draw; pass at least one ChartSeries"};
+  for (const ChartSeries& s : series) {
+    const std::string what = where + "series '" + s.label + "': ";
+    if (s.x.empty() || s.x.size() != s.y.size())
+      return Error{what + std::to_string(s.x.size()) + " x values and " + std::to_string(s.y.size()) +
+                   " y values; give one x per y, at least one point"};
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i]))
+        return Error{what + "point " + std::to_string(i) + " is not finite; drop it or replace it"};
+      if ((settings.logX && s.x[i] <= 0.0) || (settings.logY && s.y[i] <= 0.0))
+        return Error{what + "point " + std::to_string(i) +
+                     " is not positive on a logarithmic axis; use a linear axis or drop it"};
+    }
+  }
+  return {};
+}
+
+vtkSmartPointer<vtkTable> seriesTable(const ChartSeries& s) {
+  auto table = vtkSmartPointer<vtkTable>::New();
+  vtkNew<vtkDoubleArray> x, y;
+  x->SetName("x");
+  y->SetName(s.label.empty() ? "y" : s.label.c_str());
+  table->AddColumn(x);
+  table->AddColumn(y);
+  table->SetNumberOfRows(static_cast<vtkIdType>(s.x.size()));
+  for (std::size_t i = 0; i < s.x.size(); ++i) {
+    table->SetValue(static_cast<vtkIdType>(i), 0, s.x[i]);
+    table->SetValue(static_cast<vtkIdType>(i), 1, s.y[i]);
+  }
+  return table;
+}
+
+void styleAxis(vtkAxis* axis, const std::string& title, bool log) {
+  axis->SetTitle(title);
+  axis->SetLogScale(log);
+  axis->GetTitleProperties()->SetFontSize(16);
+  axis->GetLabelProperties()->SetFontSize(13);
+}
+
+}  // namespace
+
+Result<void> writeLineChart(const std::filesystem::path& png, const ChartSettings& settings,
+                            std::span<const ChartSeries> series) {
+  if (auto valid = validate(png, settings, series); !valid) return valid;
+  auto display = XDisplay::open();
+  if (!display) return Error{"chart " + png.string() + ": " + display.error().message};
+
+  // Scene: one XY chart with a legend, white background.
+  vtkNew<vtkContextView> view;
+  vtkRenderWindow* window = view->GetRenderWindow();
+  window->SetDisplayId(display->displayId());
+  window->SetOffScreenRendering(1);
+  window->SetSize(settings.widthPx, settings.heightPx);
+  view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
+  vtkNew<vtkChartXY> chart;
+  view->GetScene()->AddItem(chart);
+  chart->SetTitle(settings.title);
+  chart->GetTitleProperties()->SetFontSize(18);
+  chart->SetShowLegend(true);
+  chart->GetLegend()->GetLabelProperties()->SetFontSize(13);
+  styleAxis(chart->GetAxis(vtkAxis::BOTTOM), settings.xLabel, settings.logX);
+  styleAxis(chart->GetAxis(vtkAxis::LEFT), settings.yLabel, settings.logY);
+
+  // Series: the tables must live until the render.
+  std::vector<vtkSmartPointer<vtkTable>> tables;
+  for (std::size_t k = 0; k < series.size(); ++k) {
+    tables.push_back(seriesTable(series[k]));
+    vtkPlot* plot = chart->AddPlot(series[k].lines ? vtkChart::LINE : vtkChart::POINTS);
+    plot->SetInputData(tables.back(), 0, 1);
+    const auto& c = kPalette[k % kPalette.size()];
+    plot->SetColor(c[0], c[1], c[2], 255);
+    plot->SetWidth(series[k].lines ? 2.5f : 1.0f);
+    if (auto* line = vtkPlotLine::SafeDownCast(plot)) line->SetMarkerStyle(vtkPlotPoints::CIRCLE);
+  }
+
+  // Render, grab the back buffer, encode PNG in memory, write atomically.
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkNew<vtkPNGWriter> writer;
+  writer->WriteToMemoryOn();
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->Write();
+  vtkUnsignedCharArray* bytes = writer->GetResult();
+  if (!bytes || bytes->GetNumberOfValues() == 0)
+    return Error{"chart " + png.string() + ": VTK produced no image; check the X display (Xvfb) works"};
+  window->Finalize();
+  return writeFileAtomic(png,
+                         std::span<const std::uint8_t>(bytes->GetPointer(0),
+                                                       static_cast<std::size_t>(bytes->GetNumberOfValues())));
+}
+
+}  // namespace tissue::inspect
