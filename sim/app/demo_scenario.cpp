@@ -9,6 +9,7 @@
 #include "demo_render.h"
 #include "material_file.h"
 #include "output.h"
+#include "raymarch_scene.h"
 #include "tissue/core/atomic_file.h"
 #include "tissue/core/stopwatch.h"
 #include "tissue/inspect/vtk_export.h"
@@ -129,6 +130,8 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
   } else {
     report["render_skipped"] = img.error().message;
   }
+
+  report["raymarch"] = renderPokedOrganRayMarch(surface, material->name, o.outDir, o.width, o.height);
 
   // Inspection: the poked organ with its shading fields, for ParaView.
   if (auto vtp = writeInspection(surface, o.outDir / "organ_poked.vtp"); !vtp) return vtp.error();

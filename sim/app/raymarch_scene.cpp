@@ -6,6 +6,7 @@
 
 #include "deformations.h"
 #include "output.h"
+#include "tissue/context/headless_context.h"
 #include "tissue/mesh/load_mesh.h"
 #include "tissue/mesh/vertex_normals.h"
 #include "tissue/optics/schlick_phase.h"
@@ -20,10 +21,27 @@ float minSigmaT(const subsurface::LayerCoefficients& l) {
 }  // namespace
 
 Result<RayMarchScene> loadRayMarchScene(const std::filesystem::path& meshFile, float aspect, bool closeUp) {
-  RayMarchScene scene;
   const std::string stem = meshFile.stem().string();
-  const auto materialFile = dataDir() / "materials" / (stem + ".json");
-  auto stack = subsurface::loadLayerStack(materialFile, dataDir());
+  auto stack = subsurface::loadLayerStack(dataDir() / "materials" / (stem + ".json"), dataDir());
+  if (!stack) return Error{stack.error().message + " (ray marching needs a data/ mesh with a material file)"};
+  auto loaded = mesh::loadMesh(meshFile, {.requireUvs = true});
+  if (!loaded) return loaded.error();
+  // Plane neighbourhoods from the first layer's extinction (François eq. 8).
+  mesh::PlaneFitSettings planes;
+  planes.sigma_t = minSigmaT(stack->layers[0]);
+  auto surface = mesh::DeformableSurface::create(std::move(*loaded), planes, 2);
+  if (!surface) return surface.error();
+  auto owned = std::make_unique<mesh::DeformableSurface>(std::move(*surface));
+  auto scene = rayMarchSceneFor(*owned, stem, aspect, closeUp);
+  if (!scene) return scene.error();
+  scene->owned = std::move(owned);
+  return scene;
+}
+
+Result<RayMarchScene> rayMarchSceneFor(const mesh::DeformableSurface& s, const std::string& stem,
+                                       float aspect, bool closeUp) {
+  RayMarchScene scene;
+  auto stack = subsurface::loadLayerStack(dataDir() / "materials" / (stem + ".json"), dataDir());
   if (!stack) return Error{stack.error().message + " (ray marching needs a data/ mesh with a material file)"};
   scene.stack = std::move(*stack);
   // The build-time 1024 map when there is one, else the committed 128 one.
@@ -33,15 +51,7 @@ Result<RayMarchScene> loadRayMarchScene(const std::filesystem::path& meshFile, f
   auto maps = subsurface::subsurfaceMapsFromImages(std::span<const Image8>(&scene.subsurfaceMap, 1));
   if (!maps) return maps.error();
   scene.stack.maps = std::move(*maps);
-  auto loaded = mesh::loadMesh(meshFile, {.requireUvs = true});
-  if (!loaded) return loaded.error();
-  // Plane neighbourhoods from the first layer's extinction (François eq. 8).
-  mesh::PlaneFitSettings planes;
-  planes.sigma_t = minSigmaT(scene.stack.layers[0]);
-  auto surface = mesh::DeformableSurface::create(std::move(*loaded), planes, 2);
-  if (!surface) return surface.error();
-  scene.surface = std::make_unique<mesh::DeformableSurface>(std::move(*surface));
-  const auto& s = *scene.surface;
+  scene.surface = &s;
   scene.uvPerMm = subsurface::uvPerMmOf(s.positions(), s.uvs(), s.triangles());
   scene.pokeSite = topVertex(s.geometricRestPositions());
   // Camera: the whole organ, or a close-up of the poke site seen from above and in front.
@@ -71,7 +81,7 @@ void pokeScene(RayMarchScene& scene, double fraction, float depthMm) {
   std::vector<Float3> normals(rest.size()), positions(rest.begin(), rest.end());
   mesh::computeVertexNormals(rest, scene.surface->geometricTriangles(), normals);
   applyPoke(rest, normals, scene.pokeSite, fraction, depthMm, positions);
-  scene.surface->update(positions);
+  scene.owned->update(positions);
 }
 
 render::RayMarchMaterial gpuMaterial(const RayMarchScene& scene) {
@@ -111,6 +121,60 @@ Result<render::RayMarchRenderer> makeRayMarchRenderer(const RayMarchScene& scene
     return r.error();
   if (auto r = renderer->setMaterial(gpuMaterial(scene)); !r) return r.error();
   return renderer;
+}
+
+Result<nlohmann::json> renderRayMarchPng(const RayMarchScene& scene, const render::RayMarchSettings& settings,
+                                         int width, int height, const std::filesystem::path& png) {
+  context::ContextRequest request;
+  request.width = request.height = 16;  // the renderer draws into its own framebuffer
+  auto context = context::createHeadlessContext(request);
+  if (!context) return context.error();
+  auto renderer = makeRayMarchRenderer(scene, (*context)->procAddressFunction());
+  if (!renderer) return renderer.error();
+  auto image = renderer->renderImage(scene.camera, gpuLights(scene), settings, width, height);
+  if (!image) return image.error();
+  if (auto w = writePng(png, *image); !w) return w.error();
+  nlohmann::json out;
+  out["out"] = png.string();
+  out["draw_ms"] = renderer->lastDrawMs();
+  out["gl_renderer"] = (*context)->info().renderer;
+  out["adaptive"] = settings.adaptive;
+  if (settings.adaptive)
+    out["max_samples"] = settings.maxSamples;
+  else
+    out["samples"] = settings.samples;
+  return out;
+}
+
+int runRayMarchRender(const std::string& meshFile, const std::string& png, int width, int height, int samples,
+                      bool adaptive, const GlobalOptions& global) {
+  auto scene = loadRayMarchScene(meshFile, float(width) / float(height), false);
+  if (!scene) return fail("render", scene.error().message);
+  render::RayMarchSettings settings;
+  settings.samples = std::clamp(samples, 1, 256);
+  settings.adaptive = adaptive;
+  auto done = renderRayMarchPng(*scene, settings, width, height, png);
+  if (!done) return fail("render", done.error().message);
+  (*done)["method"] = "raymarch";
+  printResult(global, *done);
+  return 0;
+}
+
+nlohmann::json renderPokedOrganRayMarch(const mesh::DeformableSurface& surface, const std::string& stem,
+                                        const std::filesystem::path& outDir, int width, int height) {
+  nlohmann::json report = nlohmann::json::array();
+  for (bool closeUp : {false, true}) {
+    auto scene = rayMarchSceneFor(surface, stem, float(width) / float(height), closeUp);
+    if (!scene) return {{"skipped", scene.error().message}};
+    // Adaptive quality: a quarter of the 100-sample cost (docs/RESULTS.md), so the main job stays quick.
+    render::RayMarchSettings settings;
+    settings.adaptive = true;
+    const std::string name = std::string("frame_poked_raymarch") + (closeUp ? "_closeup" : "") + ".png";
+    auto done = renderRayMarchPng(*scene, settings, width, height, outDir / name);
+    if (!done) return {{"skipped", done.error().message}};
+    report.push_back(*done);
+  }
+  return report;
 }
 
 }  // namespace tissue::sim_app

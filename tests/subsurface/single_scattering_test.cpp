@@ -152,6 +152,32 @@ TEST(SingleScattering, EarlyStopEndsTheMarchOnceAttenuationFallsBelowTheThreshol
   EXPECT_LT(maxRelativeError(stopped.radiance, tail), 0.02);
 }
 
+TEST(Adaptive, MarchLengthFollowsTheRoundTripAndGrazingViewsGetMoreSamples) {
+  // One layer over a fine (4096-texel, 0.02 mm) map whose boundaries lie deep below.
+  const LayerCoefficients organ{{1.0f, 1.0f, 2.0f}, {1.5f, 1.5f, 2.5f}, 0.8f};
+  LayerStack stack;
+  stack.layers.assign(5, organ);
+  stack.maps.width = 4096;
+  stack.maps.height = 1;
+  stack.maps.mapCount = 1;
+  stack.maps.depths.assign(4096 * 4, 1.0f);
+  MarchSettings march;
+  AdaptiveSettings adaptive;
+  // Head-on: the round trip crosses 2 sigma_min t, so t = -ln(0.03) / (2 * 1.5) = 1.169 mm < 3 mm.
+  const AdaptiveChoice frontal = adaptiveMarch(flatPoint({0, 0, 1}), stack, march, adaptive, 0.05f);
+  EXPECT_NEAR(frontal.lengthMm, -std::log(0.03) / 3.0, 1e-5);
+  EXPECT_EQ(frontal.samples, int(std::ceil(double(frontal.lengthMm / adaptive.depthResolutionMm) - 1e-4)));
+  // At 75 degrees the march drifts sideways across texels and needs more samples.
+  const AdaptiveChoice grazing =
+      adaptiveMarch(flatPoint(unit(0.966f, 0.0f, 0.259f)), stack, march, adaptive, 0.05f);
+  EXPECT_GT(grazing.samples, frontal.samples);
+  EXPECT_LE(grazing.samples, adaptive.maxSamples);
+  // A large pixel footprint (far away) relaxes the sideways criterion.
+  const AdaptiveChoice far =
+      adaptiveMarch(flatPoint(unit(0.966f, 0.0f, 0.259f)), stack, march, adaptive, 5.0f);
+  EXPECT_LT(far.samples, grazing.samples);
+}
+
 TEST(LayerStack, LookupAtKnownDepths) {
   // Texel (0, 0) (file row 0: v near 1) has boundaries 0.1, 0.3, 0.3, 0.9 of 2 mm; texel (1, 0) 0.2.. .
   Image8 map(2, 1, 4);

@@ -64,6 +64,7 @@ RadianceImage renderSingleScatteringCpu(const MeshView& mesh, const LayerStack& 
   image.radiance.assign(count, Float3{});
   image.covered.assign(count, 0);
   image.samples.assign(count, 0);
+  image.viewCos.assign(count, 0.0f);
   const TriangleBvh bvh(mesh.positions, mesh.triangles);
   // Camera basis of glm::lookAt + glm::perspective; rays through pixel centres.
   const glm::dvec3 eye = d3(camera.eye);
@@ -98,6 +99,7 @@ RadianceImage renderSingleScatteringCpu(const MeshView& mesh, const LayerStack& 
         image.radiance[i] = r.radiance;
         image.covered[i] = 1;
         image.samples[i] = r.samplesUsed;
+        image.viewCos[i] = float(-glm::dot(d3(p.normal), dir));
       }
   };
   const int threads = std::max(1, std::min(settings.threads, image.height));

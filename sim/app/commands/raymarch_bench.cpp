@@ -12,6 +12,7 @@
 #include "raymarch_scene.h"
 #include "tissue/context/headless_context.h"
 #include "tissue/core/stopwatch.h"
+#include "tissue/inspect/chart.h"
 
 namespace tissue::sim_app {
 namespace {
@@ -25,6 +26,7 @@ struct BenchOptions {
   float pokeDepthMm = 8.0f;    // mm; 0 = undeformed
   bool closeUp = true;
   std::string images;                 // folder for the images, empty = none
+  std::string chart;                  // PNG of error against frame time, empty = none
   render::RayMarchSettings adaptive;  // its adaptive-quality fields
 };
 
@@ -146,17 +148,43 @@ int run(BenchOptions o, const GlobalOptions& global) {
                    subsurface::toDisplay(cpu50, s50.exposure, s50.background));
     (void)writePng(std::filesystem::path(o.images) / "raymarch_gpu_50.png", *gpu50);
   }
+  const std::string glRenderer = (*context)->info().renderer;
+  // Release GL before charting: VTK draws through GLX, which refuses to share the process's
+  // current EGL context (X error BadAccess on glXMakeCurrent, Mesa 22.3).
+  renderer = Error{"released"};
+  context->reset();
   nlohmann::json out;
   out["mesh"] = o.mesh;
   out["width"] = o.width;
   out["height"] = o.height;
   out["poke_depth_mm"] = o.pokeDepthMm;
-  out["gl_renderer"] = (*context)->info().renderer;
+  out["gl_renderer"] = glRenderer;
   out["reference"] = {{"samples", o.referenceSamples}, {"entry", "mesh"}, {"cpu_ms", referenceMs}};
   out["results"] = results;
-  out["plane_approximation_rms"] = subsurface::displayRms(planesImage, referenceImage, reference.covered);
-  out["gpu_vs_cpu_model_rms_50"] = subsurface::displayRms(
-      *gpu50, subsurface::toDisplay(cpu50, s50.exposure, s50.background), reference.covered);
+  const auto mask = commonCoverage(reference.covered, *gpu50, s50.background);
+  out["plane_approximation_rms"] = subsurface::displayRms(planesImage, referenceImage, mask);
+  out["gpu_vs_cpu_model_rms_50"] =
+      subsurface::displayRms(*gpu50, subsurface::toDisplay(cpu50, s50.exposure, s50.background), mask);
+  if (!o.chart.empty()) {
+    // Error against cost (François Table 2 as a curve): fixed counts as a line, adaptive a point.
+    inspect::ChartSeries fixedSeries{"10, 25, 50, 100 samples", {}, {}, true};
+    inspect::ChartSeries adaptiveSeries{"adaptive", {}, {}, false};
+    for (const auto& r : results) {
+      auto& series = r["setting"] == "adaptive" ? adaptiveSeries : fixedSeries;
+      series.x.push_back(r["ms"].get<double>());
+      series.y.push_back(r["image_rms"].get<double>());
+    }
+    const inspect::ChartSeries both[] = {fixedSeries, adaptiveSeries};
+    const inspect::ChartSettings settings{
+        "Ray-marched single scattering: error against time (" + glRenderer + ")",
+        "frame time (ms)",
+        "RMS difference to the CPU reference (0..1)",
+        true,
+        true,
+        900,
+        600};
+    if (auto r = inspect::writeLineChart(o.chart, settings, both); !r) return fail(cmd, r.error().message);
+  }
   if (global.json) {
     printResult(global, out);
   } else {
@@ -192,6 +220,7 @@ void registerRayMarchBenchCommand(CLI::App& app, const GlobalOptions& global, in
   cmd->add_option("--cutoff", o->adaptive.cutoff,
                   "adaptive: round-trip transmittance where the march stops (default 0.03)");
   cmd->add_option("--min-samples", o->adaptive.minSamples, "adaptive: fewest samples (default 4)");
+  cmd->add_option("--chart", o->chart, "PNG chart of error against frame time");
   cmd->add_option("--images", o->images, "folder to write the images into (must exist)");
   cmd->callback([o, &global, &exitCode] { exitCode = run(*o, global); });
 }

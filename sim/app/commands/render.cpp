@@ -6,6 +6,7 @@
 
 #include "command.h"
 #include "output.h"
+#include "raymarch_scene.h"
 #include "tissue/context/headless_context.h"
 #include "tissue/core/image.h"
 #include "tissue/mesh/deformable_surface.h"
@@ -26,6 +27,9 @@ struct RenderOptions {
   std::string baseColor;
   float scale = 1.0f;  // mm per file unit
   int samples = 4;
+  std::string method = "lit";  // lit | raymarch | parallax
+  int marchSamples = 50;       // raymarch: samples per pixel
+  bool adaptive = false;       // raymarch: per-pixel sample count
 };
 
 Float3 sub(Float3 a, Float3 b) {
@@ -70,6 +74,10 @@ int run(RenderOptions o, const GlobalOptions& global) {
   if (o.normalMap.empty()) o.normalMap = findDataTexture(stem, "normal_map").string();
   if (o.baseColor.empty()) o.baseColor = findDataTexture(stem, "base_color").string();
   if (o.width <= 0 || o.height <= 0) return fail(cmd, "--width and --height must be positive pixels");
+  if (o.method == "raymarch")
+    return runRayMarchRender(o.mesh, o.out, o.width, o.height, o.marchSamples, o.adaptive, global);
+  if (o.method == "parallax")
+    return fail(cmd, "--method parallax is not implemented yet (issue 6 step C); use lit or raymarch");
   // Step 1: the mesh, its angle-weighted normals (per geometric vertex, so seams stay smooth)
   // and UV tangent frames.
   auto loaded = mesh::loadMesh(o.mesh, {.requireUvs = false, .scaleToMm = o.scale});
@@ -160,6 +168,11 @@ void registerRenderCommand(CLI::App& app, const GlobalOptions& global, int& exit
   cmd->add_option("--base-color", opts->baseColor, "base colour PNG, sRGB (needs UVs)");
   cmd->add_option("--scale", opts->scale, "mm per file unit (default 1)");
   cmd->add_option("--samples", opts->samples, "MSAA samples (default 4; 0 = off)");
+  cmd->add_option("--method", opts->method,
+                  "lit (default) or raymarch (subsurface texture mapping; data/ meshes)")
+      ->check(CLI::IsMember({"lit", "raymarch", "parallax"}));
+  cmd->add_option("--march-samples", opts->marchSamples, "raymarch: samples per pixel (default 50)");
+  cmd->add_flag("--adaptive", opts->adaptive, "raymarch: choose the sample count per pixel");
   cmd->callback([opts, &global, &exitCode] { exitCode = run(*opts, global); });
 }
 

@@ -59,6 +59,7 @@ struct RadianceImage {
   std::vector<Float3> radiance;       ///< light units
   std::vector<std::uint8_t> covered;  ///< 1 where a camera ray met the mesh
   std::vector<int> samples;           ///< samples marched per pixel (0 where uncovered)
+  std::vector<float> viewCos;         ///< N_P . omega_out per pixel (grazing near 0; 0 where uncovered)
 };
 
 /// Renders single scattering of `mesh` seen by `camera`.
