@@ -11,6 +11,7 @@
 #include "demo_texture_space.h"
 #include "material_file.h"
 #include "output.h"
+#include "raymarch_scene.h"
 #include "tissue/core/atomic_file.h"
 #include "tissue/core/stopwatch.h"
 #include "tissue/inspect/vtk_export.h"
@@ -231,12 +232,13 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
     report["render"]["images"] = images;
   }
 
-  // The poked organ (the surface is in that state after the last renderFrame) in separable SSS
-  // and in texture-space diffusion.
+  // The poked organ (the surface is in that state after the last renderFrame) in separable SSS,
+  // texture-space diffusion and ray-marched subsurface texture mapping.
   report["render_separable"] =
       renderer.renderSeparable(*d.surface, d.material, o.outDir / "frame_poked_separable.png");
   report["texture_space"] =
       renderTextureSpaceDemo(*d.surface, o.outDir / "frame_poked_texture_space.png", o.width, o.height);
+  report["raymarch"] = renderPokedOrganRayMarch(*d.surface, d.material.name, o.outDir, o.width, o.height);
 
   // Inspection: the poked organ with its shading fields, for ParaView.
   if (auto vtp = writeInspection(*d.surface, o.outDir / "organ_poked.vtp"); !vtp) return vtp.error();

@@ -8,6 +8,7 @@
 #include "../pass_timings_json.h"
 #include "command.h"
 #include "output.h"
+#include "raymarch_scene.h"
 #include "render_texture_space.h"
 
 #include "../sss_material.h"
@@ -35,7 +36,9 @@ struct RenderOptions {
   std::string baseColor;
   float scale = 1.0f;  // mm per file unit
   int samples = 4;
-  TsdRenderOptions tsd;  // --method texture-space
+  TsdRenderOptions tsd;        // --method texture-space
+  int marchSamples = 50;       // raymarch: samples per pixel
+  bool adaptive = false;       // raymarch: per-pixel sample count
 };
 
 Float3 sub(Float3 a, Float3 b) {
@@ -80,13 +83,18 @@ int run(RenderOptions o, const GlobalOptions& global) {
   if (o.normalMap.empty()) o.normalMap = findDataTexture(stem, "normal_map").string();
   if (o.baseColor.empty()) o.baseColor = findDataTexture(stem, "base_color").string();
   if (o.width <= 0 || o.height <= 0) return fail(cmd, "--width and --height must be positive pixels");
+  if (o.method == "raymarch")
+    return runRayMarchRender(o.mesh, o.out, o.width, o.height, o.marchSamples, o.adaptive, global);
+  if (o.method == "parallax")
+    return fail(cmd, "--method parallax is not implemented yet (issue 6, layered parallax); use lit, "
+                     "separable, texture-space or raymarch");
   if (o.method == "texture-space") {
     o.tsd.mesh = o.mesh, o.tsd.out = o.out, o.tsd.baseColor = o.baseColor;
     o.tsd.width = o.width, o.tsd.height = o.height, o.tsd.scale = o.scale;
     return renderTextureSpace(o.tsd, global);
   }
   if (o.method != "lit" && o.method != "separable") {
-    return fail(cmd, "--method " + o.method + " is not one of lit, separable, texture-space");
+    return fail(cmd, "--method " + o.method + " is not one of lit, separable, texture-space, raymarch");
   }
   render::SceneObject object;
   if (o.method == "separable") {
@@ -188,7 +196,7 @@ void registerRenderCommand(CLI::App& app, const GlobalOptions& global, int& exit
   auto* cmd = app.add_subcommand("render", "render a mesh lit or with separable SSS to a PNG");
   cmd->add_option("--mesh", opts->mesh, "mesh file (OBJ, PLY, OFF, STL; default data/meshes/liver.obj)");
   cmd->add_option("--method", opts->method,
-                  "shading method: lit, separable (screen-space SSS) or texture-space");
+                  "shading method: lit, separable (screen-space SSS), texture-space or raymarch");
   cmd->add_option("--kernel", opts->kernel,
                   "separable kernel model: svd, preintegrated, guided, manual, deon, jimenez");
   cmd->add_option("--taps", opts->taps, "separable kernel taps per 1D pass (odd, default 17)");
@@ -212,6 +220,8 @@ void registerRenderCommand(CLI::App& app, const GlobalOptions& global, int& exit
   cmd->add_flag(
       "--no-depth-size", [opts](std::int64_t) { opts->tsd.depthSize = false; },
       "texture-space: no depth-based map size");
+  cmd->add_option("--march-samples", opts->marchSamples, "raymarch: samples per pixel (default 50)");
+  cmd->add_flag("--adaptive", opts->adaptive, "raymarch: choose the sample count per pixel");
   cmd->callback([opts, &global, &exitCode] { exitCode = run(*opts, global); });
 }
 

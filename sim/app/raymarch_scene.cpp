@@ -1,0 +1,180 @@
+#include "raymarch_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "deformations.h"
+#include "output.h"
+#include "tissue/context/headless_context.h"
+#include "tissue/mesh/load_mesh.h"
+#include "tissue/mesh/vertex_normals.h"
+#include "tissue/optics/schlick_phase.h"
+
+namespace tissue::sim_app {
+namespace {
+
+float minSigmaT(const subsurface::LayerCoefficients& l) {
+  return std::min({l.sigma_t.x, l.sigma_t.y, l.sigma_t.z});
+}
+
+}  // namespace
+
+Result<RayMarchScene> loadRayMarchScene(const std::filesystem::path& meshFile, float aspect, bool closeUp) {
+  const std::string stem = meshFile.stem().string();
+  auto stack = subsurface::loadLayerStack(dataDir() / "materials" / (stem + ".json"), dataDir());
+  if (!stack) return Error{stack.error().message + " (ray marching needs a data/ mesh with a material file)"};
+  auto loaded = mesh::loadMesh(meshFile, {.requireUvs = true});
+  if (!loaded) return loaded.error();
+  // Plane neighbourhoods from the first layer's extinction (François eq. 8).
+  mesh::PlaneFitSettings planes;
+  planes.sigma_t = minSigmaT(stack->layers[0]);
+  auto surface = mesh::DeformableSurface::create(std::move(*loaded), planes, 2);
+  if (!surface) return surface.error();
+  auto owned = std::make_unique<mesh::DeformableSurface>(std::move(*surface));
+  auto scene = rayMarchSceneFor(*owned, stem, aspect, closeUp);
+  if (!scene) return scene.error();
+  scene->owned = std::move(owned);
+  return scene;
+}
+
+Result<RayMarchScene> rayMarchSceneFor(const mesh::DeformableSurface& s, const std::string& stem,
+                                       float aspect, bool closeUp) {
+  RayMarchScene scene;
+  auto stack = subsurface::loadLayerStack(dataDir() / "materials" / (stem + ".json"), dataDir());
+  if (!stack) return Error{stack.error().message + " (ray marching needs a data/ mesh with a material file)"};
+  scene.stack = std::move(*stack);
+  // The build-time 1024 map when there is one, else the committed 128 one.
+  auto map = readImage(findDataTexture(stem, "subsurface"), 4);
+  if (!map) return Error{"subsurface map of " + stem + ": " + map.error().message};
+  scene.subsurfaceMap = std::move(*map);
+  auto maps = subsurface::subsurfaceMapsFromImages(std::span<const Image8>(&scene.subsurfaceMap, 1));
+  if (!maps) return maps.error();
+  scene.stack.maps = std::move(*maps);
+  scene.surface = &s;
+  scene.uvPerMm = subsurface::uvPerMmOf(s.positions(), s.uvs(), s.triangles());
+  scene.pokeSite = topVertex(s.geometricRestPositions());
+  // Camera: the whole organ, or a close-up of the poke site seen from above and in front.
+  Float3 lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
+            std::numeric_limits<float>::max()};
+  Float3 hi{-lo.x, -lo.y, -lo.z};
+  for (const Float3& p : s.geometricRestPositions()) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  const Float3 site = s.geometricRestPositions()[scene.pokeSite];
+  if (closeUp) {
+    lo = {site.x - 20.0f, site.y - 20.0f, site.z - 8.0f};
+    hi = {site.x + 20.0f, site.y + 20.0f, site.z + 2.0f};
+  }
+  scene.camera = render::frameBoundingBox(lo, hi, aspect, {-0.25f, 0.45f, -1.0f});
+  // Key light above the camera; a back light low behind the organ shows light through thin tissue.
+  const Float3 c{(lo.x + hi.x) / 2, (lo.y + hi.y) / 2, (lo.z + hi.z) / 2};
+  const float r = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  scene.lights = {{{c.x + 0.8f * r, c.y - 1.2f * r, c.z + 2.0f * r}, {2.2f, 2.1f, 2.0f}},
+                  {{c.x - 1.5f * r, c.y + 1.5f * r, c.z + 0.3f * r}, {1.2f, 1.1f, 1.0f}}};
+  return scene;
+}
+
+void pokeScene(RayMarchScene& scene, double fraction, float depthMm) {
+  const auto rest = scene.surface->geometricRestPositions();
+  std::vector<Float3> normals(rest.size()), positions(rest.begin(), rest.end());
+  mesh::computeVertexNormals(rest, scene.surface->geometricTriangles(), normals);
+  applyPoke(rest, normals, scene.pokeSite, fraction, depthMm, positions);
+  scene.owned->update(positions);
+}
+
+render::RayMarchMaterial gpuMaterial(const RayMarchScene& scene) {
+  render::RayMarchMaterial m;
+  for (const auto& l : scene.stack.layers)
+    m.layers.push_back({l.sigma_s, l.sigma_t, float(optics::schlickKFromG(l.g))});
+  m.subsurfaceMaps = {scene.subsurfaceMap};
+  m.depthScaleMm = scene.stack.depthScaleMm;
+  m.uvPerMm = scene.uvPerMm;
+  return m;
+}
+
+std::vector<render::RayMarchLight> gpuLights(const RayMarchScene& scene) {
+  std::vector<render::RayMarchLight> out;
+  for (const auto& l : scene.lights)
+    out.push_back({l.positionMm, l.radiance});
+  return out;
+}
+
+subsurface::MeshView meshView(const RayMarchScene& scene) {
+  const auto& s = *scene.surface;
+  return {s.positions(), s.normals(), s.tangents(), s.planes(), s.uvs(), s.triangles(), scene.uvPerMm};
+}
+
+subsurface::PinholeCamera pinholeOf(const render::Camera& camera) {
+  return {camera.eye, camera.target, camera.up, camera.verticalFovDeg};
+}
+
+Result<render::RayMarchRenderer> makeRayMarchRenderer(const RayMarchScene& scene,
+                                                      const gl::GetProcAddressFn& getProcAddress) {
+  auto renderer = render::RayMarchRenderer::create(getProcAddress);
+  if (!renderer) return renderer.error();
+  const auto& s = *scene.surface;
+  if (auto r =
+          renderer->setMesh({s.positions(), s.normals(), s.tangents(), s.uvs(), s.triangles()}, s.planes());
+      !r)
+    return r.error();
+  if (auto r = renderer->setMaterial(gpuMaterial(scene)); !r) return r.error();
+  return renderer;
+}
+
+Result<nlohmann::json> renderRayMarchPng(const RayMarchScene& scene, const render::RayMarchSettings& settings,
+                                         int width, int height, const std::filesystem::path& png) {
+  context::ContextRequest request;
+  request.width = request.height = 16;  // the renderer draws into its own framebuffer
+  auto context = context::createHeadlessContext(request);
+  if (!context) return context.error();
+  auto renderer = makeRayMarchRenderer(scene, (*context)->procAddressFunction());
+  if (!renderer) return renderer.error();
+  auto image = renderer->renderImage(scene.camera, gpuLights(scene), settings, width, height);
+  if (!image) return image.error();
+  if (auto w = writePng(png, *image); !w) return w.error();
+  nlohmann::json out;
+  out["out"] = png.string();
+  out["draw_ms"] = renderer->lastDrawMs();
+  out["gl_renderer"] = (*context)->info().renderer;
+  out["adaptive"] = settings.adaptive;
+  if (settings.adaptive)
+    out["max_samples"] = settings.maxSamples;
+  else
+    out["samples"] = settings.samples;
+  return out;
+}
+
+int runRayMarchRender(const std::string& meshFile, const std::string& png, int width, int height, int samples,
+                      bool adaptive, const GlobalOptions& global) {
+  auto scene = loadRayMarchScene(meshFile, float(width) / float(height), false);
+  if (!scene) return fail("render", scene.error().message);
+  render::RayMarchSettings settings;
+  settings.samples = std::clamp(samples, 1, 256);
+  settings.adaptive = adaptive;
+  auto done = renderRayMarchPng(*scene, settings, width, height, png);
+  if (!done) return fail("render", done.error().message);
+  (*done)["method"] = "raymarch";
+  printResult(global, *done);
+  return 0;
+}
+
+nlohmann::json renderPokedOrganRayMarch(const mesh::DeformableSurface& surface, const std::string& stem,
+                                        const std::filesystem::path& outDir, int width, int height) {
+  nlohmann::json report = nlohmann::json::array();
+  for (bool closeUp : {false, true}) {
+    auto scene = rayMarchSceneFor(surface, stem, float(width) / float(height), closeUp);
+    if (!scene) return {{"skipped", scene.error().message}};
+    // Adaptive quality: a quarter of the 100-sample cost (docs/RESULTS.md), so the main job stays quick.
+    render::RayMarchSettings settings;
+    settings.adaptive = true;
+    const std::string name = std::string("frame_poked_raymarch") + (closeUp ? "_closeup" : "") + ".png";
+    auto done = renderRayMarchPng(*scene, settings, width, height, outDir / name);
+    if (!done) return {{"skipped", done.error().message}};
+    report.push_back(*done);
+  }
+  return report;
+}
+
+}  // namespace tissue::sim_app
