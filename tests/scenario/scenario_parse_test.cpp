@@ -89,9 +89,11 @@ TEST(ScenarioParse, EveryBadScenarioNamesTheFileAndTheKey) {
       {scenarioWith(R"({"from": "surface", "stifness": 3})"), "springs.stifness: unknown key"},
       {scenarioWith(kSurface, R"("gravty": [0, 0, -9806])"), "gravty: unknown key"},
       {scenarioWith(R"({"from": "voxels", "stiffness": 1})"), "springs.from: expected one of"},
-      {scenarioWith(R"({"from": "tet-edges", "stiffness": 1})"), "not available in this build"},
+      {scenarioWith(R"({"from": "tet-edges", "stiffness": 1})"),
+       "mesh: springs.from = \"tet-edges\" needs a tetrahedral mesh"},
+      // The patch is open: a lattice needs a closed surface to fill.
       {scenarioWith(R"({"from": "lattice", "stiffness": 1})", R"("lattice": {"cell_size": 5})"),
-       "springs.from: \"lattice\" is not available in this build"},
+       "springs.from: \"lattice\": "},
       {scenarioWith(R"({"from": "lattice", "stiffness": 1})"), "lattice: missing"},
       {scenarioWith(kSurface, R"("gravity": [0, -9806])"), "gravity: expected [x, y, z] (mm/s^2)"},
       {scenarioWith(kSurface, R"("integrator": "rk4")"), "integrator: expected one of"},

@@ -36,9 +36,9 @@ struct RenderOptions {
   std::string baseColor;
   float scale = 1.0f;  // mm per file unit
   int samples = 4;
-  TsdRenderOptions tsd;        // --method texture-space
-  int marchSamples = 50;       // raymarch: samples per pixel
-  bool adaptive = false;       // raymarch: per-pixel sample count
+  TsdRenderOptions tsd;   // --method texture-space
+  int marchSamples = 50;  // raymarch: samples per pixel
+  bool adaptive = false;  // raymarch: per-pixel sample count
 };
 
 Float3 sub(Float3 a, Float3 b) {
@@ -86,8 +86,9 @@ int run(RenderOptions o, const GlobalOptions& global) {
   if (o.method == "raymarch")
     return runRayMarchRender(o.mesh, o.out, o.width, o.height, o.marchSamples, o.adaptive, global);
   if (o.method == "parallax")
-    return fail(cmd, "--method parallax is not implemented yet (issue 6, layered parallax); use lit, "
-                     "separable, texture-space or raymarch");
+    return fail(cmd,
+                "--method parallax is not implemented yet (issue 6, layered parallax); use lit, "
+                "separable, texture-space or raymarch");
   if (o.method == "texture-space") {
     o.tsd.mesh = o.mesh, o.tsd.out = o.out, o.tsd.baseColor = o.baseColor;
     o.tsd.width = o.width, o.tsd.height = o.height, o.tsd.scale = o.scale;

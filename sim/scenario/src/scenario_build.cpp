@@ -4,6 +4,7 @@
 
 #include "tissue/mesh/load_mesh.h"
 #include "tissue/scenario/scenario.h"
+#include "tissue/sim/tet_springs.h"
 
 namespace tissue::scenario {
 namespace {
@@ -43,11 +44,12 @@ Result<std::vector<std::uint32_t>> pinnedVertices(const Scenario& s, const Scena
 
 Result<ScenarioMesh> loadScenarioMesh(const Scenario& s) {
   const std::string ext = s.mesh.extension().string();
-  if (s.springSource == SpringSource::TetEdges || ext == ".vtk" || ext == ".vtu" || ext == ".msh")
-    return keyError(
-        s, "mesh",
-        "tetrahedral meshes (.vtk, .vtu, .msh) and springs.from = \"tet-edges\" are not available in this "
-        "build; use a surface mesh (.obj, .ply, .off, .stl) with springs.from = \"surface\"");
+  if (s.springSource == SpringSource::TetEdges) return loadTetScenarioMesh(s);
+  if (ext == ".vtk" || ext == ".vtu" || ext == ".msh")
+    return keyError(s, "mesh",
+                    "a tetrahedral mesh (" + ext +
+                        ") needs springs.from = \"tet-edges\"; for \"surface\" or "
+                        "\"lattice\" give a surface mesh (.obj, .ply, .off, .stl)");
   auto loaded = mesh::loadMesh(s.mesh, {.scaleToMm = static_cast<float>(s.meshScaleToMm)});
   if (!loaded) return keyError(s, "mesh", loaded.error().message);
   ScenarioMesh m;
@@ -65,6 +67,8 @@ Result<ScenarioMesh> loadScenarioMesh(const Scenario& s) {
     for (std::uint32_t v = 0; v < m.fileIndex.size(); ++v)
       m.fileIndex[v] = v;
   }
+  if (s.springSource == SpringSource::Lattice)
+    if (auto attached = attachLattice(s, m); !attached) return attached.error();
   return m;
 }
 
@@ -75,14 +79,14 @@ Result<sim::SpringNetwork> buildSpringsFromScenario(const Scenario& s, const Sce
       if (!springs) return keyError(s, "springs", springs.error().message);
       return springs;
     }
-    case SpringSource::TetEdges:
-      return keyError(
-          s, "springs.from",
-          "\"tet-edges\" is not available in this build (it needs the volume module); use \"surface\"");
+    case SpringSource::TetEdges: {
+      auto springs = sim::buildTetEdgeSprings(mesh.positions, mesh.tets, s.springs);
+      if (!springs) return keyError(s, "springs", springs.error().message);
+      return springs;
+    }
     case SpringSource::Lattice:
-      return keyError(
-          s, "springs.from",
-          "\"lattice\" is not available in this build (it needs the volume module); use \"surface\"");
+      if (!mesh.lattice) return keyError(s, "springs.from", "\"lattice\": the mesh carries no lattice");
+      return mesh.lattice->springs;
   }
   return keyError(s, "springs.from", "unknown source");
 }
@@ -90,10 +94,15 @@ Result<sim::SpringNetwork> buildSpringsFromScenario(const Scenario& s, const Sce
 Result<sim::MassSpringSystem> buildSystem(const Scenario& s, const ScenarioMesh& mesh) {
   auto springs = buildSpringsFromScenario(s, mesh);
   if (!springs) return springs.error();
-  auto masses = sim::computeMasses(mesh.positions, mesh.triangles, s.mass);
+  auto masses = s.springSource == SpringSource::TetEdges
+                    ? sim::computeTetMasses(mesh.positions, mesh.tets, volumeMassConfig(s))
+                : mesh.lattice ? Result<std::vector<double>>(mesh.lattice->masses)
+                               : sim::computeMasses(mesh.positions, mesh.triangles, s.mass);
   if (!masses) return keyError(s, "mass", masses.error().message);
   auto pinned = pinnedVertices(s, mesh);
   if (!pinned) return pinned.error();
+  // A pinned surface vertex of a lattice is held by pinning every corner of its cell.
+  if (mesh.lattice) *pinned = sim::cellNodes(*mesh.lattice, *pinned);
   auto system = sim::makeSystem(std::move(*springs), std::move(*masses), *pinned, s.system);
   if (!system) return keyError(s, "pinned", system.error().message);
   return system;

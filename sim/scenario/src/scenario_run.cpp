@@ -34,7 +34,8 @@ Result<std::unique_ptr<ScenarioRun>> ScenarioRun::create(const Scenario& scenari
                               .frameTime = scenario.frameTime,
                               .substeps = scenario.substeps,
                               .solver = scenario.solver};
-  auto simulator = sim::Simulator::create(std::move(*system), sim::restState(mesh->positions), config);
+  auto simulator =
+      sim::Simulator::create(std::move(*system), sim::restState(mesh->simulatedRestPositions()), config);
   if (!simulator) return Error{scenario.file.string() + ": " + simulator.error().message};
   std::unique_ptr<ScenarioRun> run(new ScenarioRun(scenario, std::move(*mesh), std::move(*simulator)));
   if (scenario.instrument) {
@@ -44,6 +45,13 @@ Result<std::unique_ptr<ScenarioRun>> ScenarioRun::create(const Scenario& scenari
     run->m_simulator.setSubstepHook(&*run->m_instrument);
   }
   return run;
+}
+
+std::vector<Float3> ScenarioRun::positions() const {
+  if (!m_mesh.lattice) return sim::toFloat3(m_simulator.state().x);
+  std::vector<Float3> surface(m_mesh.positions.size());
+  sim::embedPositions(*m_mesh.lattice, m_simulator.state().x, surface);
+  return surface;
 }
 
 Result<FrameMetrics> ScenarioRun::advance() {

@@ -19,7 +19,6 @@ namespace {
 
 constexpr int kMaxLayers = 9;  // TISSUE_MAX_LAYERS in shaders/raymarch/march.glsl
 constexpr int kMaxLights = 4;  // TISSUE_MAX_LIGHTS
-constexpr GLuint kPlaneLocation = 4;
 
 // Sets uniforms by name (looked up per frame: a handful of lookups is nothing next to the march).
 struct Uniforms {
@@ -37,7 +36,6 @@ struct RayMarchRenderer::Impl {
   std::shared_ptr<const gl::GlApi> api;
   gl::Program fixedCount, adaptive, fixedShow, adaptiveShow;
   MeshBuffers mesh;
-  gl::Buffer planes;
   std::size_t vertexCount = 0;
   RayMarchMaterial material;  // layers and scales (maps live in the textures)
   gl::Texture maps[2];
@@ -134,14 +132,10 @@ Result<void> RayMarchRenderer::setMesh(const MeshArrays& mesh, std::span<const F
   if (planes.size() != mesh.positions.size())
     return Error{"raymarch renderer: " + std::to_string(planes.size()) + " planes for " +
                  std::to_string(mesh.positions.size()) + " vertices; give one (N_S, d) per render vertex"};
-  if (auto r = m_impl->mesh.upload(g, mesh); !r) return r;
-  // The fitted planes ride along as attribute 4 of the mesh's vertex array.
-  g.BindVertexArray(m_impl->mesh.vertexArray());
-  if (!m_impl->planes) m_impl->planes = gl::Buffer::create(g);
-  g.BindBuffer(GL_ARRAY_BUFFER, m_impl->planes.id());
-  g.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(planes.size_bytes()), planes.data(), GL_DYNAMIC_DRAW);
-  g.EnableVertexAttribArray(kPlaneLocation);
-  g.VertexAttribPointer(kPlaneLocation, 4, GL_FLOAT, GL_FALSE, sizeof(Float4), nullptr);
+  // The fitted planes ride along as the mesh's plane attribute (kPlane, shared with the pipeline).
+  MeshArrays withPlanes = mesh;
+  withPlanes.planes = planes;
+  if (auto r = m_impl->mesh.upload(g, withPlanes); !r) return r;
   m_impl->vertexCount = planes.size();
   return gl::checkGlError(g, "raymarch renderer: mesh upload");
 }
@@ -152,9 +146,9 @@ Result<void> RayMarchRenderer::updateMesh(std::span<const Float3> positions, std
   StateGuard guard(g);
   if (planes.size() != m_impl->vertexCount)
     return Error{"raymarch renderer: updateMesh needs " + std::to_string(m_impl->vertexCount) + " planes"};
-  if (auto r = m_impl->mesh.update(g, positions, normals, tangents); !r) return r;
-  g.BindBuffer(GL_ARRAY_BUFFER, m_impl->planes.id());
-  g.BufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(planes.size_bytes()), planes.data());
+  MeshUpdate update;
+  update.positions = positions, update.normals = normals, update.tangents = tangents, update.planes = planes;
+  if (auto r = m_impl->mesh.update(g, update); !r) return r;
   return gl::checkGlError(g, "raymarch renderer: mesh update");
 }
 

@@ -16,6 +16,7 @@
 #include "tissue/core/surface_mesh.h"
 #include "tissue/sim/instrument.h"
 #include "tissue/sim/integrators.h"
+#include "tissue/sim/lattice.h"
 #include "tissue/sim/mass.h"
 #include "tissue/sim/spring_network.h"
 #include "tissue/sim/system.h"
@@ -87,13 +88,30 @@ struct ScenarioMesh {
   std::vector<Float3> positions;         ///< mm, one per geometric (simulated) vertex
   std::vector<Triangle> triangles;       ///< over the geometric vertices
   std::vector<std::uint32_t> fileIndex;  ///< per geometric vertex: its 0-based index in the file
+  /// springs.from = "tet-edges": the tets over `positions` (every vertex of the volume mesh;
+  /// `triangles` are then its boundary faces, for contact and inspection).
+  std::vector<Tet> tets;
+  /// springs.from = "lattice": the lattice that carries the surface; the simulator moves its
+  /// nodes and the surface follows by the embedding weights.
+  std::optional<sim::EmbeddedLattice> lattice;
+
+  /// The rest positions of the simulated vertices: the lattice nodes, or `positions`.
+  std::vector<Float3> simulatedRestPositions() const;
 };
+
+/// Loads a tetrahedral mesh (.vtk, .vtu, .msh) for springs.from = "tet-edges".
+Result<ScenarioMesh> loadTetScenarioMesh(const Scenario& scenario);
+/// The volume mass settings of a scenario: mass.total (g) or mass.density (g/mm^3; liver's
+/// 1.06e-3 when neither is given) and mass.distribution.
+sim::VolumeMassConfig volumeMassConfig(const Scenario& scenario);
+/// Fills `mesh` (a closed surface) with the lattice of springs.from = "lattice".
+Result<void> attachLattice(const Scenario& scenario, ScenarioMesh& mesh);
 
 /// Loads the scenario's mesh (relative to nothing: scenario.mesh is already resolved).
 Result<ScenarioMesh> loadScenarioMesh(const Scenario& scenario);
 
-/// The springs of the scenario's source, over the mesh's geometric vertices. "tet-edges" and
-/// "lattice" are specified but not available in this build: they fail with a clear error.
+/// The springs of the scenario's source: over the mesh's geometric vertices ("surface"), the
+/// volume mesh's vertices ("tet-edges") or the lattice nodes ("lattice").
 Result<sim::SpringNetwork> buildSpringsFromScenario(const Scenario& scenario, const ScenarioMesh& mesh);
 
 /// Springs, masses, pins and global forces: the whole system. Errors name the scenario file

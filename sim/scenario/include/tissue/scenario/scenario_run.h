@@ -52,7 +52,8 @@ class ScenarioRun {
   /// nullptr when the scenario has no instrument.
   const sim::Instrument* instrument() const { return m_instrument ? &*m_instrument : nullptr; }
   /// Positions (mm) per geometric vertex, as floats for the mesh module and the renderer.
-  std::vector<Float3> positions() const { return sim::toFloat3(m_simulator.state().x); }
+  /// With a lattice, the surface vertices follow the simulated nodes by the embedding weights.
+  std::vector<Float3> positions() const;
 
  private:
   ScenarioRun(Scenario scenario, ScenarioMesh mesh, sim::Simulator simulator);
