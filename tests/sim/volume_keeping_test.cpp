@@ -46,6 +46,7 @@ struct Outcome {
   double restVolume = 0.0;    ///< mm^3
   int frames = 0;
   bool converged = false;
+  std::size_t simulatedVertices = 0;
 };
 
 Outcome measure(const Organ& organ, const test::PokeSetup& setup, const std::vector<Float3>& deformed,
@@ -59,6 +60,7 @@ Outcome measure(const Organ& organ, const test::PokeSetup& setup, const std::vec
   }
   o.depth /= double(setup.poked.size());
   o.frames = rest.frames;
+  o.simulatedVertices = rest.x.size();
   o.converged = rest.converged;
   return o;
 }
@@ -101,8 +103,9 @@ Outcome pokeLattice(const Organ& organ, const test::PokeSetup& setup, double new
 
 void print(const char* model, double newtons, const Outcome& o) {
   std::cout << model << ": force " << newtons << " N, depth " << o.depth << " mm, volume change "
-            << o.volumeChange << " mm^3 (" << 100.0 * o.volumeChange / o.restVolume << " %), frames "
-            << o.frames << (o.converged ? "" : " (not at rest)") << "\n";
+            << o.volumeChange << " mm^3 (" << 100.0 * o.volumeChange / o.restVolume << " %), "
+            << o.simulatedVertices << " simulated vertices, frames " << o.frames
+            << (o.converged ? "" : " (not at rest)") << "\n";
 }
 
 /// Both models of `organ` under the same force (N), printed; returns {surface, lattice}.
