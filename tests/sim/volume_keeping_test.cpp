@@ -149,5 +149,21 @@ TEST(VolumeKeeping, DISABLED_DataLiver) {
   print("lattice, 20 cells", newtons, l20);
 }
 
+// The lattice half of the above alone (seconds to a minute): the data liver embedded at two
+// resolutions, the same poke. Run with --gtest_also_run_disabled_tests --gtest_filter='*LiverLattice*'.
+TEST(VolumeKeeping, DISABLED_DataLiverLattice) {
+  const Organ organ = dataLiver();
+  ASSERT_FALSE(organ.positions.empty()) << "cannot load data/meshes/liver.obj";
+  const auto setup = test::makePokeSetup(organ.positions, 0.15, 20.0);
+  ASSERT_GT(setup.poked.size(), 10u);
+  const double newtons = std::getenv("POKE_F") ? std::atof(std::getenv("POKE_F")) : 0.3;
+  for (int cells : {12, 20}) {
+    const Outcome l = pokeLattice(organ, setup, newtons, cells);
+    print(("lattice, " + std::to_string(cells) + " cells").c_str(), newtons, l);
+    EXPECT_TRUE(l.converged);
+    EXPECT_LT(std::abs(l.volumeChange), 0.01 * l.restVolume);
+  }
+}
+
 }  // namespace
 }  // namespace tissue::sim
