@@ -103,6 +103,36 @@ Result<std::vector<double>> latticeMasses(const EmbeddedLattice& lattice, const 
   return masses;
 }
 
+/// Numbers the corners of the kept cells (grid order) into lattice.nodePositions and
+/// lattice.cells; returns each grid cell's index into lattice.cells (-1 when not kept).
+std::vector<std::int64_t> numberNodes(const detail::Grid& g, const std::vector<char>& keep,
+                                      EmbeddedLattice& lattice) {
+  const std::size_t nx = static_cast<std::size_t>(g.cells[0]) + 1,
+                    ny = static_cast<std::size_t>(g.cells[1]) + 1;
+  std::vector<std::int64_t> nodeOf(nx * ny * (static_cast<std::size_t>(g.cells[2]) + 1), -1);
+  std::vector<std::int64_t> cellSlot(g.cellCount(), -1);
+  for (int k = 0; k < g.cells[2]; ++k)
+    for (int j = 0; j < g.cells[1]; ++j)
+      for (int i = 0; i < g.cells[0]; ++i) {
+        if (!keep[g.cellIndex(i, j, k)]) continue;
+        std::array<std::uint32_t, 8> cell{};
+        for (int c = 0; c < 8; ++c) {
+          const std::size_t ci = static_cast<std::size_t>(i + (c & 1)),
+                            cj = static_cast<std::size_t>(j + ((c >> 1) & 1)),
+                            ck = static_cast<std::size_t>(k + ((c >> 2) & 1));
+          std::int64_t& id = nodeOf[ci + nx * (cj + ny * ck)];
+          if (id < 0) {
+            id = static_cast<std::int64_t>(lattice.nodePositions.size());
+            lattice.nodePositions.push_back(g.origin + Vec3d{ci * g.h, cj * g.h, ck * g.h});
+          }
+          cell[c] = static_cast<std::uint32_t>(id);
+        }
+        cellSlot[g.cellIndex(i, j, k)] = static_cast<std::int64_t>(lattice.cells.size());
+        lattice.cells.push_back(cell);
+      }
+  return cellSlot;
+}
+
 }  // namespace
 
 Result<EmbeddedLattice> buildEmbeddedLattice(std::span<const Float3> surfacePositions,
@@ -129,29 +159,7 @@ Result<EmbeddedLattice> buildEmbeddedLattice(std::span<const Float3> surfacePosi
   }
 
   // Nodes: the corners of kept cells, numbered in grid order.
-  const std::size_t nx = static_cast<std::size_t>(g.cells[0]) + 1,
-                    ny = static_cast<std::size_t>(g.cells[1]) + 1;
-  std::vector<std::int64_t> nodeOf(nx * ny * (static_cast<std::size_t>(g.cells[2]) + 1), -1);
-  std::vector<std::int64_t> cellSlot(g.cellCount(), -1);
-  for (int k = 0; k < g.cells[2]; ++k)
-    for (int j = 0; j < g.cells[1]; ++j)
-      for (int i = 0; i < g.cells[0]; ++i) {
-        if (!keep[g.cellIndex(i, j, k)]) continue;
-        std::array<std::uint32_t, 8> cell{};
-        for (int c = 0; c < 8; ++c) {
-          const std::size_t ci = static_cast<std::size_t>(i + (c & 1)),
-                            cj = static_cast<std::size_t>(j + ((c >> 1) & 1)),
-                            ck = static_cast<std::size_t>(k + ((c >> 2) & 1));
-          std::int64_t& id = nodeOf[ci + nx * (cj + ny * ck)];
-          if (id < 0) {
-            id = static_cast<std::int64_t>(lattice.nodePositions.size());
-            lattice.nodePositions.push_back(g.origin + Vec3d{ci * g.h, cj * g.h, ck * g.h});
-          }
-          cell[c] = static_cast<std::uint32_t>(id);
-        }
-        cellSlot[g.cellIndex(i, j, k)] = static_cast<std::int64_t>(lattice.cells.size());
-        lattice.cells.push_back(cell);
-      }
+  const std::vector<std::int64_t> cellSlot = numberNodes(g, keep, lattice);
   lattice.origin = g.origin;
   lattice.cellSize = g.h;
   lattice.gridCells = g.cells;
