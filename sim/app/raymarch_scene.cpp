@@ -123,8 +123,9 @@ Result<render::RayMarchRenderer> makeRayMarchRenderer(const RayMarchScene& scene
   return renderer;
 }
 
-Result<nlohmann::json> renderRayMarchPng(const RayMarchScene& scene, const render::RayMarchSettings& settings,
-                                         int width, int height, const std::filesystem::path& png) {
+Result<nlohmann::json> renderRayMarchPng(const RayMarchScene& scene,
+                                         const render::RayMarchRenderSettings& settings, int width,
+                                         int height, const std::filesystem::path& png) {
   context::ContextRequest request;
   request.width = request.height = 16;  // the renderer draws into its own framebuffer
   auto context = context::createHeadlessContext(request);
@@ -150,7 +151,7 @@ int runRayMarchRender(const std::string& meshFile, const std::string& png, int w
                       bool adaptive, const GlobalOptions& global) {
   auto scene = loadRayMarchScene(meshFile, float(width) / float(height), false);
   if (!scene) return fail("render", scene.error().message);
-  render::RayMarchSettings settings;
+  render::RayMarchRenderSettings settings;
   settings.samples = std::clamp(samples, 1, 256);
   settings.adaptive = adaptive;
   auto done = renderRayMarchPng(*scene, settings, width, height, png);
@@ -167,7 +168,7 @@ nlohmann::json renderPokedOrganRayMarch(const mesh::DeformableSurface& surface, 
     auto scene = rayMarchSceneFor(surface, stem, float(width) / float(height), closeUp);
     if (!scene) return {{"skipped", scene.error().message}};
     // Adaptive quality: a quarter of the 100-sample cost (docs/RESULTS.md), so the main job stays quick.
-    render::RayMarchSettings settings;
+    render::RayMarchRenderSettings settings;
     settings.adaptive = true;
     const std::string name = std::string("frame_poked_raymarch") + (closeUp ? "_closeup" : "") + ".png";
     auto done = renderRayMarchPng(*scene, settings, width, height, outDir / name);

@@ -55,8 +55,9 @@ subsurface::PinholeCamera pinholeOf(const render::Camera& camera);
 
 /// Renders `scene` with ray-marched single scattering on a new headless context into `png`
 /// (written atomically), `width` x `height` pixels; returns what it did (ms, context).
-Result<nlohmann::json> renderRayMarchPng(const RayMarchScene& scene, const render::RayMarchSettings& settings,
-                                         int width, int height, const std::filesystem::path& png);
+Result<nlohmann::json> renderRayMarchPng(const RayMarchScene& scene,
+                                         const render::RayMarchRenderSettings& settings, int width,
+                                         int height, const std::filesystem::path& png);
 
 /// `tissue-sim render --method raymarch`: the whole organ of data/ mesh `meshFile`; prints the
 /// result like every command and returns the exit code.

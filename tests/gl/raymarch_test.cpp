@@ -88,8 +88,8 @@ Result<render::RayMarchRenderer> makeRenderer(const PatchScene& p, context::GlCo
   return r;
 }
 
-render::RayMarchSettings testSettings() {
-  render::RayMarchSettings s;
+render::RayMarchRenderSettings testSettings() {
+  render::RayMarchRenderSettings s;
   s.samples = 32;
   return s;
 }
@@ -101,7 +101,7 @@ TEST_P(RayMarchTest, ShaderMatchesItsCpuModelAndTheGolden) {
   const PatchScene p = loadPatch();
   auto renderer = makeRenderer(p, *context);
   ASSERT_TRUE(renderer) << renderer.error().message;
-  const render::RayMarchSettings s = testSettings();
+  const render::RayMarchRenderSettings s = testSettings();
   const auto lights = p.gpuLights();
   auto gpu = renderer->renderImage(p.camera, lights, s, kWidth, kHeight);
   ASSERT_TRUE(gpu) << gpu.error().message;
@@ -149,7 +149,7 @@ TEST_P(RayMarchTest, APokeChangesTheImageOnlyAroundItAndMatchesAFullRefit) {
   PatchScene p = loadPatch();
   auto renderer = makeRenderer(p, *context);
   ASSERT_TRUE(renderer) << renderer.error().message;
-  const render::RayMarchSettings s = testSettings();
+  const render::RayMarchRenderSettings s = testSettings();
   const auto lights = p.gpuLights();
   auto before = renderer->renderImage(p.camera, lights, s, kWidth, kHeight);
   ASSERT_TRUE(before) << before.error().message;

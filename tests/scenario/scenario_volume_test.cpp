@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 double zBelow(std::span<const Float3> positions, double fraction) {
   auto [lo, hi] = std::minmax_element(positions.begin(), positions.end(),
                                       [](const Float3& a, const Float3& b) { return a.z < b.z; });
-  return lo->z + fraction * (hi->z - lo->z);
+  return double(lo->z) + fraction * double(hi->z - lo->z);
 }
 
 bool allFinite(std::span<const Float3> p) {
@@ -58,7 +58,9 @@ TEST(ScenarioVolume, TetEdgesOnTheSharedLiverHangUnderGravity) {
   ASSERT_TRUE(allFinite(now));
   double sag = 0.0;
   for (std::size_t v = 0; v < now.size(); ++v) {
-    if (system.invMasses[v] == 0.0) EXPECT_EQ(now[v].z, tets->positions[v].z);
+    if (system.invMasses[v] == 0.0) {
+      EXPECT_EQ(now[v].z, tets->positions[v].z);
+    }
     sag = std::max(sag, double(tets->positions[v].z - now[v].z));
   }
   EXPECT_GT(sag, 0.01);

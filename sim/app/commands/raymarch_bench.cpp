@@ -25,9 +25,9 @@ struct BenchOptions {
   int repeats = 3;             // GPU frames timed per setting (median)
   float pokeDepthMm = 8.0f;    // mm; 0 = undeformed
   bool closeUp = true;
-  std::string images;                 // folder for the images, empty = none
-  std::string chart;                  // PNG of error against frame time, empty = none
-  render::RayMarchSettings adaptive;  // its adaptive-quality fields
+  std::string images;                       // folder for the images, empty = none
+  std::string chart;                        // PNG of error against frame time, empty = none
+  render::RayMarchRenderSettings adaptive;  // its adaptive-quality fields
 };
 
 double median(std::vector<double> v) {
@@ -81,7 +81,7 @@ int run(BenchOptions o, const GlobalOptions& global) {
   const auto reference = subsurface::renderSingleScatteringCpu(meshView(scene), scene.stack, scene.lights,
                                                                pinholeOf(scene.camera), ref);
   const double referenceMs = refClock.elapsedMs();
-  const render::RayMarchSettings base;
+  const render::RayMarchRenderSettings base;
   const Image8 referenceImage = subsurface::toDisplay(reference, base.exposure, base.background);
   // Step 2: the same with the fitted planes: what the plane approximation costs in accuracy.
   ref.entry = subsurface::EntryMode::Planes;
@@ -98,7 +98,7 @@ int run(BenchOptions o, const GlobalOptions& global) {
   Image8 hundred;
   const int fixed[] = {10, 25, 50, 100, 0};
   for (int n : fixed) {
-    render::RayMarchSettings s = o.adaptive;
+    render::RayMarchRenderSettings s = o.adaptive;
     s.samples = n;
     s.adaptive = n == 0;
     std::vector<double> ms;
@@ -138,7 +138,7 @@ int run(BenchOptions o, const GlobalOptions& global) {
   twin.march.samples = 50;
   const auto cpu50 = subsurface::renderSingleScatteringCpu(meshView(scene), scene.stack, scene.lights,
                                                            pinholeOf(scene.camera), twin);
-  render::RayMarchSettings s50;
+  render::RayMarchRenderSettings s50;
   auto gpu50 = renderer->renderImage(scene.camera, lights, s50, o.width, o.height);
   if (!gpu50) return fail(cmd, gpu50.error().message);
   if (!o.images.empty()) {

@@ -54,7 +54,7 @@ Result<nlohmann::json> study(const Case& c, const StudyOptions& o) {
   if (!loaded) return loaded.error();
   RayMarchScene& scene = *loaded;
   if (c.pokeDepthMm > 0.0f) pokeScene(scene, 0.02, c.pokeDepthMm);
-  const render::RayMarchSettings display;
+  const render::RayMarchRenderSettings display;
   auto image = [&](subsurface::EntryMode entry, int samples, bool jitter) {
     subsurface::CpuImageSettings s;
     s.width = o.width;

@@ -46,7 +46,7 @@ struct RayMarchLight {
 };
 
 /// Per-frame settings (the CPU model's MarchSettings and AdaptiveSettings, plus display).
-struct RayMarchSettings {
+struct RayMarchRenderSettings {
   int samples = 50;                    ///< fixed sample count (1..256)
   float depthMaxMm = 3.0f;             ///< Depth_max of eq. 15, mm
   float attenuationThreshold = 1e-3f;  ///< stop once exp(-tau_PM) falls below it (0: never)
@@ -85,7 +85,7 @@ class RayMarchRenderer {
 
   /// Renders `width` x `height` pixels and reads them back (RGBA8, rows top first).
   Result<Image8> renderImage(const Camera& camera, std::span<const RayMarchLight> lights,
-                             const RayMarchSettings& settings, int width, int height);
+                             const RayMarchRenderSettings& settings, int width, int height);
 
   /// ms of the last renderImage: the draw including glFinish (CPU wall clock).
   double lastDrawMs() const;

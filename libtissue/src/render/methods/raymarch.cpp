@@ -18,7 +18,6 @@ namespace tissue::render {
 namespace {
 
 constexpr int kMaxLayers = 9;  // TISSUE_MAX_LAYERS in shaders/raymarch/march.glsl
-constexpr int kMaxLights = 4;  // TISSUE_MAX_LIGHTS
 
 // Sets uniforms by name (looked up per frame: a handful of lookups is nothing next to the march).
 struct Uniforms {
@@ -46,7 +45,7 @@ struct RayMarchRenderer::Impl {
   const gl::GlApi& gl() const { return *api; }
 
   void setUniforms(GLuint program, const Camera& camera, std::span<const RayMarchLight> lights,
-                   const RayMarchSettings& s, int width, int height) const {
+                   const RayMarchRenderSettings& s, int width, int height) const {
     const gl::GlApi& g = gl();
     const Uniforms u{g, program};
     const glm::mat4 vp = viewProjection(camera, float(width) / float(height));
@@ -176,7 +175,7 @@ Result<void> RayMarchRenderer::setMaterial(const RayMarchMaterial& material) {
 }
 
 Result<Image8> RayMarchRenderer::renderImage(const Camera& camera, std::span<const RayMarchLight> lights,
-                                             const RayMarchSettings& s, int width, int height) {
+                                             const RayMarchRenderSettings& s, int width, int height) {
   Impl& m = *m_impl;
   const gl::GlApi& g = m.gl();
   if (m.mesh.empty()) return Error{"raymarch renderer: no mesh; call setMesh first"};
