@@ -115,8 +115,8 @@ Result<render::RayMarchRenderer> makeRayMarchRenderer(const RayMarchScene& scene
   auto renderer = render::RayMarchRenderer::create(getProcAddress);
   if (!renderer) return renderer.error();
   const auto& s = *scene.surface;
-  if (auto r =
-          renderer->setMesh({s.positions(), s.normals(), s.tangents(), s.uvs(), s.triangles()}, s.planes());
+  if (auto r = renderer->setMesh({s.positions(), s.normals(), s.tangents(), s.uvs(), s.triangles(), {}},
+                                 s.planes());
       !r)
     return r.error();
   if (auto r = renderer->setMaterial(gpuMaterial(scene)); !r) return r.error();

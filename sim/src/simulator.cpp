@@ -158,12 +158,24 @@ FrameReport Simulator::advanceFrame() {
     integrator = event.nextIntegrator;
     substeps = event.nextSubsteps;
   }
-  m_integrator = integrator;
-  m_substeps = substeps;
   report.integrator = integrator;
   report.substeps = substeps;
+  m_integrator = integrator;
+  m_substeps = substeps;
+  relaxRecovery(report.events.empty());
   ++m_frame;
   return report;
+}
+
+void Simulator::relaxRecovery(bool quietFrame) {
+  m_quietFrames = quietFrame ? m_quietFrames + 1 : 0;
+  const int after = m_config.recovery.relaxAfterFrames;
+  if (after <= 0 || m_quietFrames < after) return;
+  // Only the substeps relax: an integrator is replaced only after failing at maxSubsteps, so the
+  // configured one is not tried again.
+  const int base = m_integrator == m_config.integrator ? m_config.substeps : 1;
+  if (m_substeps > base) m_substeps = std::max(base, m_substeps / 2);
+  m_quietFrames = 0;
 }
 
 }  // namespace tissue::sim

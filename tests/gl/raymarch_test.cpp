@@ -75,7 +75,8 @@ Result<render::RayMarchRenderer> makeRenderer(const PatchScene& p, context::GlCo
   auto r = render::RayMarchRenderer::create(context.procAddressFunction());
   if (!r) return r.error();
   const auto& s = *p.surface;
-  if (auto ok = r->setMesh({s.positions(), s.normals(), s.tangents(), s.uvs(), s.triangles()}, s.planes());
+  if (auto ok =
+          r->setMesh({s.positions(), s.normals(), s.tangents(), s.uvs(), s.triangles(), {}}, s.planes());
       !ok)
     return ok.error();
   render::RayMarchMaterial m;

@@ -1,6 +1,7 @@
 // Divergence: detected within the frame, rolled back, recovered, reported; never NaN out.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "test_systems.h"
@@ -53,6 +54,30 @@ TEST(Divergence, SymplecticEulerPastTheLimitGainsSubsteps) {
   EXPECT_GT(events, 0);
   EXPECT_EQ(sim->integrator(), Integrator::SymplecticEuler);
   EXPECT_LT(0.02 / sim->substeps(), 2.0 * std::sqrt(1.0 / 1e5));  // below the limit now
+}
+
+TEST(Divergence, RecoveredSubstepsRelaxAfterQuietFrames) {
+  // Symplectic Euler at 20 ms > the 6.3 ms limit: one frame recovers with 4 substeps (5 ms).
+  // After 5 quiet frames the simulator halves back to 2, which diverges once and doubles again:
+  // the recovered setting is revisited, never kept for good, and never left unstable.
+  SimulatorConfig config{.integrator = Integrator::SymplecticEuler, .frameTime = 0.02, .substeps = 1};
+  config.recovery.relaxAfterFrames = 5;
+  auto sim = Simulator::create(test::oneSpring(1.0, 0.1), displacedSpring(), config);
+  ASSERT_TRUE(sim.ok());
+  EXPECT_FALSE(sim->advanceFrame().events.empty());
+  ASSERT_EQ(sim->substeps(), 4);
+  std::vector<int> substeps;
+  int events = 0;
+  for (int f = 0; f < 30; ++f) {
+    const FrameReport report = sim->advanceFrame();
+    events += static_cast<int>(report.events.size());
+    substeps.push_back(sim->substeps());
+    ASSERT_TRUE(allFinite(sim->state()));
+    ASSERT_LE(report.substeps, 4);
+  }
+  EXPECT_NE(std::find(substeps.begin(), substeps.end(), 2), substeps.end());  // it relaxed
+  EXPECT_GT(events, 0);                                                       // 2 diverged
+  EXPECT_EQ(sim->integrator(), Integrator::SymplecticEuler);
 }
 
 TEST(Divergence, ImplicitEulerAtTheSameStepHasNoEvent) {

@@ -30,6 +30,11 @@ struct RecoveryConfig {
   bool switchIntegrator = true;  ///< then explicit -> symplectic -> implicit Euler, Verlet -> implicit;
                                  ///< implicit Euler and fast-mass-spring (both unconditionally
                                  ///< stable) end the chain
+  /// After this many frames without divergence, a recovered simulator steps back towards the
+  /// configured setting: substeps are halved (not below SimulatorConfig::substeps). A replaced
+  /// integrator stays replaced (it failed at maxSubsteps). A transient (a tool backing off compressed tissue)
+  /// then costs a few expensive frames instead of every later frame. 0 keeps the recovered setting for good.
+  int relaxAfterFrames = 60;
 };
 
 /// Simulator settings.
@@ -66,7 +71,8 @@ struct FrameReport {
 };
 
 /// A system, its state and the frame loop. After a recovery the more stable setting is kept
-/// for later frames (reported in each FrameReport).
+/// for later frames (reported in each FrameReport) until RecoveryConfig::relaxAfterFrames quiet
+/// frames step it back towards the configured one.
 class Simulator {
  public:
   /// Fails on a state whose sizes do not match the system, non-finite values, or bad settings.
@@ -91,6 +97,9 @@ class Simulator {
  private:
   Simulator(MassSpringSystem system, State initial, const SimulatorConfig& config);
   /// Runs the frame's substeps from m_state; returns the divergence reason, empty when none.
+  /// Counts quiet frames and, after RecoveryConfig::relaxAfterFrames of them, steps a recovered
+  /// setting back towards the configured one.
+  void relaxRecovery(bool quietFrame);
   std::string tryFrame(Integrator integrator, int substeps, double energyCeiling, FrameReport& report);
 
   MassSpringSystem m_system;
@@ -99,6 +108,7 @@ class Simulator {
   SimulatorConfig m_config;
   Integrator m_integrator;
   int m_substeps;
+  int m_quietFrames = 0;  ///< frames since the last divergence event
   long m_frame = 0;
   double m_energyFloor = 0.0;
   StepWorkspace m_workspace;
