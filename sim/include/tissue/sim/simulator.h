@@ -34,7 +34,7 @@ struct RecoveryConfig {
   /// configured setting: substeps are halved (not below SimulatorConfig::substeps). A replaced
   /// integrator stays replaced (it failed at maxSubsteps). A transient (a tool backing off compressed tissue)
   /// then costs a few expensive frames instead of every later frame. 0 keeps the recovered setting for good.
-  int relaxAfterFrames = 60;
+  int relaxAfterFrames = 10;
 };
 
 /// Simulator settings.
