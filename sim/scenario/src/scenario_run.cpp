@@ -80,6 +80,7 @@ Result<FrameMetrics> ScenarioRun::advance() {
   m.integrator = report.integrator;
   m.substeps = report.substeps;
   m.divergenceEvents = static_cast<int>(report.events.size());
+  if (!report.events.empty()) m.divergenceReason = report.events.front().reason;
   m.integrateMs = report.integrateMs;
   m.contactMs = report.hookMs;
   m.checkMs = report.checkMs;
@@ -129,13 +130,13 @@ std::string framesCsv(const std::vector<FrameMetrics>& frames) {
   out << "frame,time_s,integrator,substeps,force_x_N,force_y_N,force_z_N,force_N,contacts,grasped,max_"
          "stretch,"
          "kinetic_J,elastic_J,divergence_events,integrate_ms,contact_ms,check_ms,rollback_ms,action_ms,total_"
-         "ms\n";
+         "ms,divergence_reason\n";
   for (const FrameMetrics& f : frames)
     out << f.frame << ',' << f.timeS << ',' << sim::integratorName(f.integrator) << ',' << f.substeps << ','
         << f.forceN.x << ',' << f.forceN.y << ',' << f.forceN.z << ',' << f.forceMagnitudeN << ','
         << f.contacts << ',' << f.grasped << ',' << f.maxStretch << ',' << f.kineticJ << ',' << f.elasticJ
         << ',' << f.divergenceEvents << ',' << f.integrateMs << ',' << f.contactMs << ',' << f.checkMs << ','
-        << f.rollbackMs << ',' << f.actionMs << ',' << f.totalMs << '\n';
+        << f.rollbackMs << ',' << f.actionMs << ',' << f.totalMs << ',' << f.divergenceReason << '\n';
   return out.str();
 }
 

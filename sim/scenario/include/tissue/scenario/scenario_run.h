@@ -27,6 +27,7 @@ struct FrameMetrics {
   double kineticJ = 0.0;         ///< J
   double elasticJ = 0.0;         ///< J
   int divergenceEvents = 0;      ///< rollbacks in this frame
+  std::string divergenceReason;  ///< the first rollback's reason ("non-finite", "energy blow-up", ...)
   bool finite = true;            ///< every position, velocity and the force are finite
   double integrateMs = 0.0;      ///< forces and integration
   double contactMs = 0.0;        ///< the instrument (contact, grasp), inside the substeps
