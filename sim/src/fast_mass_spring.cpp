@@ -1,13 +1,16 @@
 // The fast mass-spring solver of Liu, Bargteil, O'Brien and Kavan, "Fast Simulation of
 // Mass-Spring Systems", ACM Trans. Graph. 32(6), 2013 (SIGGRAPH Asia).
 //
-// Implicit Euler, x' = x + h v', v' = v + h M^-1 f(x') (the paper's eq. 1), is the critical point
-// of g(x) = 1/2 (x - y)^T M (x - y) + h^2 E(x) with y = x + h v (the paper's eq. 2-3, "implicit
-// Euler as optimisation"; external forces enter E as -x^T f_ext). A spring's energy is
-// 1/2 k (|p1 - p2| - r)^2 = min over |d| = r of 1/2 k |(p1 - p2) - d|^2 (§4, "spring
-// potential"), so with the directions d as extra unknowns the springs' energy is
+// The paper's text is not in ../shared/papers, so its equations are quoted here by content and
+// by the name of the part that states them, not by number.
+//
+// Implicit Euler, x' = x + h v', v' = v + h M^-1 f(x'), is the critical point of
+// g(x) = 1/2 (x - y)^T M (x - y) + h^2 E(x) with y = x + h v ("implicit Euler as energy
+// minimisation"; external forces enter E as -x^T f_ext). A spring's energy is
+// 1/2 k (|p1 - p2| - r)^2 = min over |d| = r of 1/2 k |(p1 - p2) - d|^2 (the spring-potential
+// lemma), so with the directions d as extra unknowns the springs' energy is
 // 1/2 x^T L x - x^T J d with L = sum k_i A_i A_i^T (x) I3 and J = sum k_i A_i S_i^T (x) I3
-// (A_i the spring's incidence vector, S_i its selector). Block coordinate descent (§4.1):
+// (A_i the spring's incidence vector, S_i its selector). Block coordinate descent:
 //   local step:  d_i = r_i (p1 - p2) / |p1 - p2|, each spring on its own;
 //   global step: (M + h^2 L) x = M y + h^2 J d + h^2 f_ext, one solve with a matrix that does not
 //                depend on the state, so it is factored once (sparse Cholesky) per (system, h).
@@ -18,7 +21,7 @@
 // with A the same matrix. At rest every term of the right-hand side is exactly zero, so a
 // system at rest stays at rest bit for bit, and rounding scales with the motion, not the
 // coordinates. Damping (Rayleigh alpha M and beta K, spring damping c) is added implicitly as
-// -C v' = -C D / h, which moves h C onto the matrix (see addDampingTerms below).
+// -C v' = -C D / h, which moves h C onto the matrix (see factor() below).
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <bit>
@@ -188,7 +191,7 @@ void constantRightHandSide(const MassSpringSystem& system, const State& state, d
   }
 }
 
-/// Local step at positions x (§4.1): per spring k (d - (x0_i - x0_j)) with
+/// Local step at positions x (block coordinate descent, the d-step): per spring k (d - (x0_i - x0_j)) with
 /// d = r (x_i - x_j) / |x_i - x_j|, gathered per vertex into J d - L x0. A spring of zero length
 /// has no direction; it keeps the direction it had at the step's start (or none).
 void localStep(const MassSpringSystem& system, std::span<const Vec3d> x, FastSolverCache::Impl& c) {
@@ -245,8 +248,8 @@ bool startFromPrediction(const MassSpringSystem& system, const State& state, dou
   return atPrediction <= atStart;
 }
 
-/// Global step (§4.1): A D = h M v + h^2 f_ext + h^2 (J d - L x0) - A_fp D_p, x = x0 + D on the
-/// free vertices.
+/// Global step (block coordinate descent, the x-step): A D = h M v + h^2 f_ext + h^2 (J d - L x0) - A_fp D_p,
+/// x = x0 + D on the free vertices.
 void globalStep(const MassSpringSystem& system, double h, FastSolverCache::Impl& c, std::span<Vec3d> x) {
   const double h2 = h * h;
   const std::size_t rows = c.freeVertices.size();
