@@ -32,39 +32,56 @@ Eigen::MatrixXd guideWeights(int halfCells, double k, double b) {
   return gamma;
 }
 
-// sum Gamma (R - a a^T)^2.
+// sum Gamma (R - a a^T)^2, without temporaries.
 double objective(const Eigen::MatrixXd& gamma, const Eigen::MatrixXd& r, const Eigen::VectorXd& a) {
-  return (gamma.array() * (r - a * a.transpose()).array().square()).sum();
+  double f = 0;
+  for (Eigen::Index j = 0; j < a.size(); ++j) {
+    for (Eigen::Index i = 0; i < a.size(); ++i) {
+      const double e = r(i, j) - a(i) * a(j);
+      f += gamma(i, j) * e * e;
+    }
+  }
+  return f;
 }
 
-// Minimises the objective subject to sum(a) = 1 from a feasible start.
+// Minimises the objective subject to sum(a) = 1 from a feasible start. The n x n work matrices
+// are allocated once: fresh ones each iteration cost more in page faults than the arithmetic.
 Eigen::VectorXd solveChannel(const Eigen::MatrixXd& gamma, const Eigen::MatrixXd& r, Eigen::VectorXd a) {
   const Eigen::Index n = a.size();
   const Eigen::VectorXd ones = Eigen::VectorXd::Ones(n);
+  Eigen::MatrixXd h(n, n), damped(n, n);
+  Eigen::LLT<Eigen::MatrixXd> llt(n);
+  Eigen::VectorXd g(n), diag(n), y(n), z(n), next(n);
   double f = objective(gamma, r, a);
   double lambda = 1e-3;
   for (int iter = 0; iter < 200 && lambda < 1e12; ++iter) {
     // Residual e = R - a a^T. Gradient/2 of the objective: g_k = -2 sum_j Gamma_kj e_kj a_j;
     // Gauss-Newton matrix H_kl = 2 delta_kl sum_j Gamma_kj a_j^2 + 2 Gamma_kl a_k a_l.
-    const Eigen::MatrixXd e = r - a * a.transpose();
-    const Eigen::VectorXd g = -2.0 * (gamma.array() * e.array()).matrix() * a;
-    Eigen::MatrixXd h = 2.0 * (gamma.array() * (a * a.transpose()).array()).matrix();
-    h.diagonal() += 2.0 * (gamma * a.cwiseProduct(a));
-    const Eigen::VectorXd diag = h.diagonal().cwiseMax(1e-30);
+    g.setZero();
+    for (Eigen::Index l = 0; l < n; ++l) {
+      double diagonal = 0;
+      for (Eigen::Index k = 0; k < n; ++k) {
+        g(k) -= 2.0 * gamma(k, l) * (r(k, l) - a(k) * a(l)) * a(l);
+        h(k, l) = 2.0 * gamma(k, l) * a(k) * a(l);
+        diagonal += gamma(l, k) * a(k) * a(k);
+      }
+      diag(l) = diagonal;
+    }
+    h.diagonal() += 2.0 * diag;
+    diag = h.diagonal().cwiseMax(1e-30);
     bool accepted = false;
     while (!accepted && lambda < 1e12) {
-      Eigen::MatrixXd damped = h;
+      damped = h;
       damped.diagonal() += lambda * diag;
-      const Eigen::LLT<Eigen::MatrixXd> llt(damped);
+      llt.compute(damped);
       if (llt.info() != Eigen::Success) {
         lambda *= 10.0;
         continue;
       }
       // KKT with the equality 1^T delta = 0: delta = y - mu z, H y = -g, H z = 1.
-      const Eigen::VectorXd y = llt.solve(-g);
-      const Eigen::VectorXd z = llt.solve(ones);
-      const Eigen::VectorXd delta = y - (ones.dot(y) / ones.dot(z)) * z;
-      const Eigen::VectorXd next = a + delta;
+      y = llt.solve(-g);
+      z = llt.solve(ones);
+      next = a + y - (ones.dot(y) / ones.dot(z)) * z;
       const double fNext = objective(gamma, r, next);
       if (fNext < f) {
         const double gain = f - fNext;
