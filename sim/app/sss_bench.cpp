@@ -1,6 +1,7 @@
 #include "sss_bench.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "sss_material.h"
 #include "tissue/core/stopwatch.h"
@@ -61,25 +62,44 @@ Result<reference::ImageError> compareLastFrame(SssBenchContext& ctx) {
                                          ctx.reference, ctx.profiles);
 }
 
+namespace {
+
+// One separable row: kernel `model` with `taps` taps and `rank` components, timed and compared.
+Result<void> separableRow(SssBenchContext& ctx, const char* model, int taps, int rank,
+                          std::vector<SssBenchRow>& rows, nlohmann::json& skipped) {
+  auto material = makeSeparableMaterial(ctx.material, model, taps, rank);
+  if (!material) {
+    skipped.push_back({{"method", "separable"},
+                       {"setting", std::string(model) + (rank > 1 ? std::to_string(rank) : "") + "-" +
+                                       std::to_string(taps)},
+                       {"reason", material.error().message}});
+    return {};
+  }
+  ctx.scene.objects.at(0).method = material->settings;
+  auto ms = timeFrames(ctx, "separable:");
+  if (!ms) return ms.error();
+  if (auto r = ensureReference(ctx); !r) return r.error();
+  auto error = compareLastFrame(ctx);
+  if (!error) return error.error();
+  rows.push_back({"separable", material->kernelName, ms->first, ms->second, error->rms, error->relativeRms});
+  return {};
+}
+
+}  // namespace
+
 Result<std::vector<SssBenchRow>> separableBenchRows(SssBenchContext& ctx, nlohmann::json& skipped) {
   std::vector<SssBenchRow> rows;
   for (const char* model : {"svd", "preintegrated", "guided", "manual", "deon", "jimenez"}) {
     for (const int taps : {7, 11, 17, 25}) {
-      auto material = makeSeparableMaterial(ctx.material, model, taps);
-      if (!material) {
-        skipped.push_back({{"method", "separable"},
-                           {"setting", std::string(model) + "-" + std::to_string(taps)},
-                           {"reason", material.error().message}});
-        continue;
-      }
-      ctx.scene.objects.at(0).method = material->settings;
-      auto ms = timeFrames(ctx, "separable:");
-      if (!ms) return ms.error();
-      if (auto r = ensureReference(ctx); !r) return r.error();
-      auto error = compareLastFrame(ctx);
-      if (!error) return error.error();
-      rows.push_back(
-          {"separable", material->kernelName, ms->first, ms->second, error->rms, error->relativeRms});
+      if (auto r = separableRow(ctx, model, taps, 1, rows, skipped); !r) return r.error();
+    }
+  }
+  // Rank-R kernels (Freude eq. 5.10): SVD ranks 2 and 3, d'Eon's sum of 2 and 4 Gaussians, each
+  // component two more 1D passes.
+  for (const auto& [model, rank] :
+       {std::pair{"svd", 2}, std::pair{"svd", 3}, std::pair{"deon", 2}, std::pair{"deon", 4}}) {
+    for (const int taps : {11, 17}) {
+      if (auto r = separableRow(ctx, model, taps, rank, rows, skipped); !r) return r.error();
     }
   }
   return rows;

@@ -40,8 +40,9 @@ struct SssBenchContext {
 };
 
 /// Marks pixels only partly covered by a surface (radiance a < 1 after an MSAA resolve) as
-/// "no object" (id 0) in `diffuse`: the resolve averages their positions and ids with the
-/// background's zeros, so they are not points of the surface and the reference must skip them.
+/// "no object" (id 0) in `diffuse`: the separable resolve gives them one real surface sample
+/// (id, position, the object's own diffuse), but the blurred result there is weighted by the
+/// coverage (for the tone map), which the reference does not model, so it skips them.
 void dropPartialCoverage(std::vector<Float4>& diffuse, const render::FloatImage& radiance);
 
 /// Renders `ctx.scene` `ctx.frames` times (after one warm-up); median frame ms and the median
@@ -55,7 +56,8 @@ Result<void> ensureReference(SssBenchContext& ctx);
 /// Compares the last frame's blurred diffuse (FrameView::BlurredDiffuse) with the reference.
 Result<reference::ImageError> compareLastFrame(SssBenchContext& ctx);
 
-/// The separable method's rows: every kernel model at 7, 11, 17 and 25 taps. Models that cannot
+/// The separable method's rows: every kernel model at 7, 11, 17 and 25 taps, then rank-R kernels
+/// (SVD rank 2 and 3, "svd2-17"; d'Eon 2 and 4 Gaussians, "deon4-17") at 11 and 17. Models that cannot
 /// be built for the material (e.g. manual without Table A.1 parameters) go to `skipped`.
 Result<std::vector<SssBenchRow>> separableBenchRows(SssBenchContext& ctx, nlohmann::json& skipped);
 

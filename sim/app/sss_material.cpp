@@ -54,14 +54,18 @@ std::vector<Float4> transmittanceTable(const reference::RadialProfile& R) {
 }  // namespace
 
 Result<SeparableMaterial> makeSeparableMaterial(const optics::ScatteringMaterial& material,
-                                                const std::string& model, int taps) {
+                                                const std::string& model, int taps, int rank) {
   auto kind = optics::parseKernelModel(model);
   if (!kind) return kind.error();
+  if (rank != 1 && *kind != optics::KernelModel::Svd && *kind != optics::KernelModel::Deon) {
+    return Error{"kernel '" + model + "' has rank 1; --rank " + std::to_string(rank) +
+                 " applies to svd (SVD rank) and deon (Gaussian count) only"};
+  }
   auto profile = optics::groundTruthProfile(material);
   if (!profile) return profile.error();
   optics::KernelSettings settings;
   settings.taps = taps;
-  settings.rank = 1;  // the renderer blurs one separable component per object
+  settings.rank = rank;  // SVD rank or d'Eon Gaussians: one pair of blur passes each
   if (*kind == optics::KernelModel::Manual) {
     auto manual = optics::manualParameters(material.name);
     if (!manual) {
@@ -73,11 +77,16 @@ Result<SeparableMaterial> makeSeparableMaterial(const optics::ScatteringMaterial
   auto kernel = optics::buildKernel(*profile, *kind, settings);
   if (!kernel) return Error{"kernel '" + model + "': " + kernel.error().message};
   SeparableMaterial out;
-  for (const optics::KernelTap& t : kernel->taps())
-    out.settings.kernel.push_back({t.weight.x, t.weight.y, t.weight.z, t.offsetMm});
+  for (const optics::KernelComponent& c : kernel->components) {
+    render::SeparableComponent& component = out.settings.components.emplace_back();
+    component.sign = c.sign;
+    for (const optics::KernelTap& t : c.taps)
+      component.taps.push_back({t.weight.x, t.weight.y, t.weight.z, t.offsetMm});
+  }
   out.truth = toReference(*profile);
   out.settings.transmittance = transmittanceTable(out.truth);
-  out.kernelName = std::string(optics::kernelModelName(*kind)) + "-" + std::to_string(taps);
+  out.kernelName = std::string(optics::kernelModelName(*kind)) + (rank > 1 ? std::to_string(rank) : "") +
+                   "-" + std::to_string(taps);
   return out;
 }
 

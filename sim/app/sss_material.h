@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Turning an optical material into what the separable SSS method takes as plain arrays
-/// (render::SeparableSettings: kernel taps {w_R, w_G, w_B, offset_mm} and a transmittance table),
+/// (render::SeparableSettings: kernel components of taps {w_R, w_G, w_B, offset_mm} with their
+/// signs, and a transmittance table),
 /// and into the ground truth its CPU reference convolves with. The apps wire optics to the
 /// renderer here; the renderer itself never sees optics. Lengths in mm.
 
@@ -16,16 +17,18 @@ namespace tissue::sim_app {
 
 /// A material ready for the separable method and for its reference.
 struct SeparableMaterial {
-  render::SeparableSettings settings;  ///< kernel and transmittance for the renderer
+  render::SeparableSettings settings;  ///< kernel components and transmittance for the renderer
   reference::RadialProfile truth;      ///< the dipole profile normalised to 1 (mm^-2): the reference's R
-  std::string kernelName;              ///< e.g. "preintegrated-17"
+  std::string kernelName;              ///< e.g. "preintegrated-17", "svd2-17" (rank 2)
 };
 
-/// Builds kernel `model` (svd, preintegrated, guided, manual, deon, jimenez; rank 1) with `taps`
-/// taps for `material`, and its transmittance T(d) = int R(sqrt(r^2 + d^2)) dA / int R dA
-/// (Jimenez et al. 2010, for a normalised profile) at 16 thicknesses. Errors name the model.
+/// Builds kernel `model` (svd, preintegrated, guided, manual, deon, jimenez) with `taps` taps
+/// for `material`, of `rank` components (SVD rank, or d'Eon's Gaussian count; 1..8, the other
+/// models rank 1), all passed to the renderer with their signs (Freude eq. 5.10), and its transmittance T(d)
+/// = int R(sqrt(r^2 + d^2)) dA / int R dA (Jimenez et al. 2010, for a normalised profile) at 16 thicknesses.
+/// Errors name the model.
 Result<SeparableMaterial> makeSeparableMaterial(const optics::ScatteringMaterial& material,
-                                                const std::string& model, int taps);
+                                                const std::string& model, int taps, int rank = 1);
 
 /// The first layer of data/materials/<name>.json as an optical material.
 Result<optics::ScatteringMaterial> loadDataMaterial(const std::string& name);

@@ -5,6 +5,7 @@
 
 #include "gl_test_support.h"
 #include "image_compare.h"
+#include "separable_scene.h"
 #include "test_scene.h"
 #include "tissue/reference/screen_convolution.h"
 
@@ -13,51 +14,8 @@ namespace {
 
 constexpr int kSize = 256;
 
-// A Gaussian kernel of standard deviation `sigmaMm` (all channels), `taps` evenly spaced over
-// +-3 sigma, weights normalised to 1: exact for a fronto-parallel plane up to sampling.
 render::SeparableSettings gaussianKernel(float sigmaMm, int taps) {
-  render::SeparableSettings s;
-  float sum = 0.0f;
-  for (int i = 0; i < taps; ++i) {
-    const float x =
-        taps == 1 ? 0.0f : (-3.0f + 6.0f * static_cast<float>(i) / static_cast<float>(taps - 1)) * sigmaMm;
-    const float w = taps == 1 ? 1.0f : std::exp(-x * x / (2.0f * sigmaMm * sigmaMm));
-    s.kernel.push_back({w, w, w, x});
-    sum += w;
-  }
-  for (Float4& k : s.kernel)
-    k = {k.x / sum, k.y / sum, k.z / sum, k.w};
-  return s;
-}
-
-// The 2D Gaussian the kernel separates, tabulated for the CPU reference.
-reference::RadialProfile gaussianProfile(float sigmaMm) {
-  reference::RadialProfile p;
-  for (int i = 0; i <= 1000; ++i) {
-    const float r = 4.0f * sigmaMm * static_cast<float>(i) / 1000.0f;
-    const float v = std::exp(-r * r / (2.0f * sigmaMm * sigmaMm)) / (2.0f * 3.14159265f * sigmaMm * sigmaMm);
-    p.radiusMm.push_back(r);
-    p.value.push_back({v, v, v});
-  }
-  return p;
-}
-
-// Camera on +z at 200 mm looking at the origin; a light straight above the patch.
-render::Scene frontScene() {
-  render::Scene scene;
-  scene.camera.eye = {0.0f, 0.0f, 200.0f};
-  scene.camera.nearMm = 50.0f;
-  scene.camera.farMm = 400.0f;
-  scene.lights[0].type = render::LightType::Directional;
-  scene.lights[0].direction = {0.0f, 0.0f, -1.0f};
-  return scene;
-}
-
-render::SceneObject separableObject(render::MeshHandle mesh, render::SeparableSettings settings) {
-  render::SceneObject o;
-  o.mesh = mesh;
-  o.method = std::move(settings);
-  return o;
+  return render::rankOneSeparable(gaussianTaps(sigmaMm, taps));
 }
 
 // A texture whose left `whiteColumns` of 64 columns are white and the rest black.
@@ -68,14 +26,6 @@ Image8 halfWhite(int whiteColumns) {
       for (int c = 0; c < 3; ++c)
         image.at(x, y)[c] = x < whiteColumns ? 255 : 0;
   return image;
-}
-
-double meanOver(const render::FloatImage& image, int x0, int x1, int y0, int y1) {
-  double sum = 0.0;
-  for (int y = y0; y < y1; ++y)
-    for (int x = x0; x < x1; ++x)
-      sum += static_cast<double>(image.at(x, y).x);
-  return sum / ((x1 - x0) * (y1 - y0));
 }
 
 class SeparableTest : public ::testing::TestWithParam<Backend> {};
@@ -105,14 +55,9 @@ TEST_P(SeparableTest, BlurKeepsTheMeanBrightnessOfAUniformlyLitPatch) {
   TISSUE_CONTEXT_OR_SKIP(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
-  const SphereMesh patch = makePatch(200.0f, 4, 0.0f);  // fills the view
-  auto mesh = renderer->createMesh(patch.arrays());
-  auto stripes = renderer->createTexture(makeBaseColor(256));
-  ASSERT_TRUE(mesh && stripes);
-  render::Scene scene = frontScene();
-  scene.objects = {separableObject(*mesh, gaussianKernel(3.0f, 25))};
-  scene.objects[0].baseColor = *stripes;
-  ASSERT_TRUE(renderer->renderImage(scene, kSize, kSize));
+  auto scene = texturedPatchScene(*renderer, makeBaseColor(256), gaussianKernel(3.0f, 25));
+  ASSERT_TRUE(scene) << scene.error().message;
+  ASSERT_TRUE(renderer->renderImage(*scene, kSize, kSize));
   auto before = renderer->readFrame(render::FrameView::Diffuse);
   auto after = renderer->readFrame(render::FrameView::BlurredDiffuse);
   ASSERT_TRUE(before && after);
@@ -210,14 +155,9 @@ TEST_P(SeparableTest, BlurAgreesWithTheCpuReferenceOnAFlatPatch) {
   TISSUE_CONTEXT_OR_SKIP(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
-  const SphereMesh patch = makePatch(200.0f, 4, 0.0f);
-  auto mesh = renderer->createMesh(patch.arrays());
-  auto stripes = renderer->createTexture(makeBaseColor(256));
-  ASSERT_TRUE(mesh && stripes);
-  render::Scene scene = frontScene();
-  scene.objects = {separableObject(*mesh, gaussianKernel(2.0f, 25))};
-  scene.objects[0].baseColor = *stripes;
-  ASSERT_TRUE(renderer->renderImage(scene, kSize, kSize));
+  auto scene = texturedPatchScene(*renderer, makeBaseColor(256), gaussianKernel(2.0f, 25));
+  ASSERT_TRUE(scene) << scene.error().message;
+  ASSERT_TRUE(renderer->renderImage(*scene, kSize, kSize));
   auto diffuse = renderer->readFrame(render::FrameView::Diffuse);
   auto position = renderer->readFrame(render::FrameView::Position);
   auto blurred = renderer->readFrame(render::FrameView::BlurredDiffuse);
@@ -269,9 +209,15 @@ TEST_P(SeparableTest, TimingsListEverySeparablePass) {
       "shadow:0",  "clear",   "lit",     "separable:geometry", "separable:blur-x", "separable:blur-y",
       "composite", "tonemap", "readback"};
   EXPECT_EQ(names, expected);
-  // A kernel that is empty or too long is an Error naming the object.
-  std::get<render::SeparableSettings>(scene.objects[0].method).kernel.clear();
+  // A kernel that is empty, or has an empty component, is an Error naming the object.
+  auto& settings = std::get<render::SeparableSettings>(scene.objects[0].method);
+  settings.components.push_back({});
   auto bad = renderer->renderImage(scene, 128, 128);
+  ASSERT_FALSE(bad);
+  EXPECT_NE(bad.error().message.find("separable object 0's kernel component 1"), std::string::npos)
+      << bad.error().message;
+  settings.components.clear();
+  bad = renderer->renderImage(scene, 128, 128);
   ASSERT_FALSE(bad);
   EXPECT_NE(bad.error().message.find("separable object 0"), std::string::npos) << bad.error().message;
 }

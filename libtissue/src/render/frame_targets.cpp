@@ -18,6 +18,14 @@ void makeTexture(const gl::GlApi& gl, gl::Texture& t, GLint format, int w, int h
   gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
+// A multisampled texture (fixed sample locations, as mixing with renderbuffers would require).
+void makeMultisampleTexture(const gl::GlApi& gl, gl::Texture& t, GLenum format, int w, int h, int samples) {
+  t = gl::Texture::create(gl);
+  gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, t.id());
+  gl.TexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, samples, format, w, h, GL_TRUE);
+  gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+}
+
 void makeRenderbuffer(const gl::GlApi& gl, gl::Renderbuffer& rb, GLenum format, int w, int h, int samples) {
   rb = gl::Renderbuffer::create(gl);
   gl.BindRenderbuffer(GL_RENDERBUFFER, rb.id());
@@ -44,9 +52,12 @@ Result<void> singleTextureFramebuffer(const gl::GlApi& gl, gl::Framebuffer& fb, 
 }  // namespace
 
 Result<void> FrameTargets::ensure(const gl::GlApi& gl, int width, int height, int samples) {
-  GLint maxSize = 0, maxSamples = 0;
+  GLint maxSize = 0, maxSamples = 0, maxColorSamples = 0, maxDepthSamples = 0;
   gl.GetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxSize);
   gl.GetIntegerv(GL_MAX_SAMPLES, &maxSamples);
+  gl.GetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &maxColorSamples);
+  gl.GetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &maxDepthSamples);
+  maxSamples = std::min({maxSamples, maxColorSamples, maxDepthSamples});
   if (width <= 0 || height <= 0 || width > maxSize || height > maxSize) {
     return Error{"renderer: image size " + std::to_string(width) + "x" + std::to_string(height) +
                  " is outside 1.." + std::to_string(maxSize) + " pixels"};
@@ -67,22 +78,26 @@ Result<void> FrameTargets::ensure(const gl::GlApi& gl, int width, int height, in
   gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m_depth.id());
   gl.DrawBuffers(3, kGeometryBuffers);
   if (auto r = complete(gl, "geometry"); !r) return r;
-  // Step 2: the multisampled geometry framebuffer.
+  // Step 2: the multisampled geometry framebuffer, of textures (the separable resolve reads
+  // the samples of diffuse and position with texelFetch).
   if (samples > 1) {
-    makeRenderbuffer(gl, m_msaaRadiance, GL_RGBA16F, width, height, samples);
-    makeRenderbuffer(gl, m_msaaDiffuse, GL_RGBA16F, width, height, samples);
-    makeRenderbuffer(gl, m_msaaPosition, GL_RGBA32F, width, height, samples);
-    makeRenderbuffer(gl, m_msaaDepth, GL_DEPTH_COMPONENT24, width, height, samples);
+    makeMultisampleTexture(gl, m_msaaRadiance, GL_RGBA16F, width, height, samples);
+    makeMultisampleTexture(gl, m_msaaDiffuse, GL_RGBA16F, width, height, samples);
+    makeMultisampleTexture(gl, m_msaaPosition, GL_RGBA32F, width, height, samples);
+    makeMultisampleTexture(gl, m_msaaDepth, GL_DEPTH_COMPONENT24, width, height, samples);
     m_msaa = gl::Framebuffer::create(gl);
     gl.BindFramebuffer(GL_FRAMEBUFFER, m_msaa.id());
-    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m_msaaRadiance.id());
-    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, m_msaaDiffuse.id());
-    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_RENDERBUFFER, m_msaaPosition.id());
-    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m_msaaDepth.id());
+    const GLenum ms = GL_TEXTURE_2D_MULTISAMPLE;
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, ms, m_msaaRadiance.id(), 0);
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, ms, m_msaaDiffuse.id(), 0);
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, ms, m_msaaPosition.id(), 0);
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, ms, m_msaaDepth.id(), 0);
     gl.DrawBuffers(3, kGeometryBuffers);
     if (auto r = complete(gl, "multisampled geometry"); !r) return r;
   } else {
     m_msaa.reset();
+    for (gl::Texture* t : {&m_msaaRadiance, &m_msaaDiffuse, &m_msaaPosition, &m_msaaDepth})
+      t->reset();
   }
   // Step 3: blur, composite and output targets.
   makeTexture(gl, m_blurTemp, GL_RGBA16F, width, height);

@@ -2,7 +2,8 @@
 // The renderer's intermediate targets for one image size:
 //   geometry: radiance (RGBA16F, linear HDR; a = coverage), diffuse (RGBA16F, the separable
 //     objects' diffuse before the blur; a = object id), position (RGBA32F, world mm + view depth
-//     mm) and depth; multisampled renderbuffers when MSAA is on, resolved into textures;
+//     mm) and depth; multisampled textures when MSAA is on (sampled by the separable method's
+//     resolve), resolved into textures;
 //   blurTemp, blurred (RGBA16F): the separable blur's two passes;
 //   composite (RGBA16F): radiance + blurred diffuse, the tone map's input;
 //   output (RGBA8): the tone-mapped sRGB image read back by renderImage.
@@ -27,6 +28,11 @@ class FrameTargets {
   GLuint radiance() const { return m_radiance.id(); }
   GLuint diffuse() const { return m_diffuse.id(); }
   GLuint position() const { return m_position.id(); }
+  /// The single-sample geometry framebuffer (radiance, diffuse, position: attachments 0..2).
+  GLuint resolvedFramebuffer() const { return m_resolved.id(); }
+  /// The multisampled diffuse and position (GL_TEXTURE_2D_MULTISAMPLE; 0 without MSAA).
+  GLuint msaaDiffuse() const { return m_msaaDiffuse.id(); }
+  GLuint msaaPosition() const { return m_msaaPosition.id(); }
   GLuint blurTempFramebuffer() const { return m_blurTempFb.id(); }
   GLuint blurTemp() const { return m_blurTemp.id(); }
   GLuint blurredFramebuffer() const { return m_blurredFb.id(); }
@@ -42,7 +48,8 @@ class FrameTargets {
  private:
   int m_width = 0, m_height = 0, m_samples = -1;
   gl::Texture m_radiance, m_diffuse, m_position, m_blurTemp, m_blurred, m_composite;
-  gl::Renderbuffer m_depth, m_msaaRadiance, m_msaaDiffuse, m_msaaPosition, m_msaaDepth, m_output;
+  gl::Texture m_msaaRadiance, m_msaaDiffuse, m_msaaPosition, m_msaaDepth;  // multisampled
+  gl::Renderbuffer m_depth, m_output;
   gl::Framebuffer m_resolved, m_msaa, m_blurTempFb, m_blurredFb, m_compositeFb, m_outputFb;
 };
 

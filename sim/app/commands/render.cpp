@@ -1,4 +1,5 @@
-// tissue-sim render [--mesh FILE] --out IMAGE.png [--method lit|separable [--kernel MODEL] [--taps N]]:
+// tissue-sim render [--mesh FILE] --out IMAGE.png [--method lit|separable [--kernel MODEL] [--taps N]
+// [--rank R]]:
 // one image of a mesh, lit or with screen-space separable SSS.
 #include <algorithm>
 #include <cmath>
@@ -28,6 +29,7 @@ struct RenderOptions {
   std::string method = "lit";
   std::string kernel = "preintegrated";
   int taps = 17;
+  int rank = 1;          // separable: SVD rank or d'Eon Gaussians (components, Freude eq. 5.10)
   std::string material;  // data/materials/<name>.json; default: the mesh's stem
   std::string out;
   int width = 1024;  // pixels
@@ -102,10 +104,10 @@ int run(RenderOptions o, const GlobalOptions& global) {
     if (o.material.empty()) o.material = stem;
     auto optical = loadDataMaterial(o.material);
     if (!optical) return fail(cmd, "--material " + o.material + ": " + optical.error().message);
-    auto separable = makeSeparableMaterial(*optical, o.kernel, o.taps);
+    auto separable = makeSeparableMaterial(*optical, o.kernel, o.taps, o.rank);
     if (!separable)
-      return fail(cmd, "--kernel " + o.kernel + " --taps " + std::to_string(o.taps) + ": " +
-                           separable.error().message);
+      return fail(cmd, "--kernel " + o.kernel + " --taps " + std::to_string(o.taps) + " --rank " +
+                           std::to_string(o.rank) + ": " + separable.error().message);
     object.method = separable->settings;
   }
   // Step 1: the mesh, its angle-weighted normals (per geometric vertex, so seams stay smooth)
@@ -179,6 +181,7 @@ int run(RenderOptions o, const GlobalOptions& global) {
   if (o.method == "separable") {
     out["kernel"] = o.kernel;
     out["taps"] = o.taps;
+    out["rank"] = o.rank;
     out["material"] = o.material;
   }
   out["triangles"] = m.triangles.size();
@@ -201,6 +204,8 @@ void registerRenderCommand(CLI::App& app, const GlobalOptions& global, int& exit
   cmd->add_option("--kernel", opts->kernel,
                   "separable kernel model: svd, preintegrated, guided, manual, deon, jimenez");
   cmd->add_option("--taps", opts->taps, "separable kernel taps per 1D pass (odd, default 17)");
+  cmd->add_option("--rank", opts->rank,
+                  "separable kernel components: svd rank or deon Gaussian count, 1..8 (default 1)");
   cmd->add_option("--material", opts->material,
                   "data/materials/<NAME>.json for separable (default: the mesh's name)");
   cmd->add_option("--out", opts->out, "output PNG (written atomically)")->required();

@@ -5,6 +5,7 @@
 /// the pipeline switches on it once per object. Lengths are mm.
 
 #include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -18,17 +19,30 @@ enum class ShadingMethod { Lit, Separable, TextureSpace, RayMarch, Parallax };
 /// Blinn-Phong through the normal map, straight into the HDR target. No subsurface scattering.
 struct LitSettings {};
 
+/// One component a_r of a separable kernel (Freude eq. 5.10): the diffuse is blurred
+/// horizontally, then vertically, with the same taps, and the result is multiplied by `sign`.
+struct SeparableComponent {
+  /// The 1D taps: {w_R, w_G, w_B, offset_mm} each, unitless weights, offsets in mm on the
+  /// surface. 1..kMaxKernelTaps.
+  std::vector<Float4> taps;
+  /// Per channel (R, G, B): +1, or -1 for an SVD component of a negative eigenvalue (Freude
+  /// eq. 5.8-5.10). Any finite factor is applied as given.
+  Float3 sign{1.0f, 1.0f, 1.0f};
+};
+
 /// Screen-space separable subsurface scattering (Jimenez et al. 2015; Freude 2014, ch. 4):
-/// diffuse and specular go to separate targets, the diffuse is blurred by two 1D passes with
-/// this object's kernel, scaled per pixel (Freude eq. 4.11) and following the surface
-/// (eq. 4.12); the specular is added after the blur.
+/// diffuse and specular go to separate targets, the diffuse is blurred by two 1D passes per
+/// kernel component, scaled per pixel (Freude eq. 4.11) and following the surface (eq. 4.12),
+/// and the components' results are summed with their signs (eq. 5.10); the specular is added
+/// after the blur.
 struct SeparableSettings {
-  /// The 1D kernel: {w_R, w_G, w_B, offset_mm} per tap, unitless weights (each channel sums to
-  /// 1 for an energy-conserving kernel), offsets in mm on the surface. Up to kMaxKernelTaps.
-  std::vector<Float4> kernel;
+  /// The kernel K = sum_r sign_r (a_r horizontally, then a_r vertically), Freude eq. 5.10:
+  /// 1..kMaxKernelComponents components (rank 1: one). An energy-conserving kernel has
+  /// sum_r sign_r (sum of a_r's weights)^2 = 1 per channel. Objects of one frame may differ in rank.
+  std::vector<SeparableComponent> components;
   /// Depth difference (mm, along the view ray) at which a tap is fully replaced by the centre
-  /// colour (follow-surface, eq. 4.12: t = |i_d - o_d| / followSurfaceMm). 0: the kernel's
-  /// largest |offset|.
+  /// colour (follow-surface, eq. 4.12: t = |i_d - o_d| / followSurfaceMm). 0: the largest
+  /// |offset| of any component.
   float followSurfaceMm = 0.0f;
   bool followSurface = true;  ///< eq. 4.12 on or off
   /// Transmittance through thin parts (Jimenez et al. 2010, translucency): {T_R, T_G, T_B,
@@ -39,6 +53,13 @@ struct SeparableSettings {
   /// surface's own shadow-map depth).
   float transmissionShrinkMm = 0.5f;
 };
+
+/// A rank-1 kernel: one component of `taps` ({w_R, w_G, w_B, offset_mm}) with sign +1.
+inline SeparableSettings rankOneSeparable(std::vector<Float4> taps) {
+  SeparableSettings s;
+  s.components.push_back({std::move(taps), {1.0f, 1.0f, 1.0f}});
+  return s;
+}
 
 /// Texture-space diffusion (d'Eon et al. 2007). Not in this build: branch `tsd`.
 struct TextureSpaceSettings {};
@@ -51,8 +72,10 @@ struct ParallaxSettings {};
 using MethodSettings =
     std::variant<LitSettings, SeparableSettings, TextureSpaceSettings, RayMarchSettings, ParallaxSettings>;
 
-/// The most taps a separable kernel may have.
+/// The most taps a separable kernel component may have.
 inline constexpr int kMaxKernelTaps = 64;
+/// The most components (rank) a separable kernel may have; each costs two 1D passes.
+inline constexpr int kMaxKernelComponents = 8;
 /// The most transmittance rows of a separable material.
 inline constexpr int kMaxTransmittanceRows = 16;
 
