@@ -21,6 +21,14 @@ void dropPartialCoverage(std::vector<Float4>& diffuse, const render::FloatImage&
     if (radiance.pixels[i].w < 0.999f) diffuse[i].w = 0.0f;
 }
 
+void removeCoverageWeight(std::vector<Float4>& blurred, const render::FloatImage& radiance) {
+  for (std::size_t i = 0; i < blurred.size() && i < radiance.pixels.size(); ++i) {
+    const float a = radiance.pixels[i].w;
+    if (a > 0.0f && a < 1.0f)
+      blurred[i] = {blurred[i].x / a, blurred[i].y / a, blurred[i].z / a, blurred[i].w};
+  }
+}
+
 Result<std::pair<double, double>> timeFrames(SssBenchContext& ctx, const std::string& passPrefix) {
   std::vector<double> frame, method;
   for (int i = 0; i <= ctx.frames; ++i) {
@@ -43,11 +51,10 @@ Result<void> ensureReference(SssBenchContext& ctx) {
   if (!diffuse) return diffuse.error();
   auto position = ctx.renderer->readFrame(render::FrameView::Position);
   if (!position) return position.error();
-  auto radiance = ctx.renderer->readFrame(render::FrameView::Radiance);
-  if (!radiance) return radiance.error();
+  // With MSAA, silhouette pixels hold one real surface sample (the separable resolve), so the
+  // reference convolves them too.
   ctx.diffuse = std::move(diffuse->pixels);
   ctx.position = std::move(position->pixels);
-  dropPartialCoverage(ctx.diffuse, *radiance);
   auto convolved =
       reference::convolveScreen({ctx.width, ctx.height, ctx.diffuse, ctx.position}, ctx.profiles);
   if (!convolved) return convolved.error();
@@ -58,6 +65,9 @@ Result<void> ensureReference(SssBenchContext& ctx) {
 Result<reference::ImageError> compareLastFrame(SssBenchContext& ctx) {
   auto blurred = ctx.renderer->readFrame(render::FrameView::BlurredDiffuse);
   if (!blurred) return blurred.error();
+  auto radiance = ctx.renderer->readFrame(render::FrameView::Radiance);
+  if (!radiance) return radiance.error();
+  removeCoverageWeight(blurred->pixels, *radiance);
   return reference::compareWithReference({ctx.width, ctx.height, ctx.diffuse, ctx.position}, blurred->pixels,
                                          ctx.reference, ctx.profiles);
 }

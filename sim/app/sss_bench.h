@@ -40,20 +40,25 @@ struct SssBenchContext {
 };
 
 /// Marks pixels only partly covered by a surface (radiance a < 1 after an MSAA resolve) as
-/// "no object" (id 0) in `diffuse`: the separable resolve gives them one real surface sample
-/// (id, position, the object's own diffuse), but the blurred result there is weighted by the
-/// coverage (for the tone map), which the reference does not model, so it skips them.
+/// "no object" (id 0) in `diffuse`, for frames whose resolve averaged their positions and ids
+/// with the background (before the separable resolve; the demo's reference still uses it).
 void dropPartialCoverage(std::vector<Float4>& diffuse, const render::FloatImage& radiance);
+
+/// Divides the RGB of pixels partly covered (0 < radiance a < 1) by their coverage: the separable
+/// blur weights silhouettes by coverage for the tone map, the reference convolves the surface's
+/// own colour there.
+void removeCoverageWeight(std::vector<Float4>& blurred, const render::FloatImage& radiance);
 
 /// Renders `ctx.scene` `ctx.frames` times (after one warm-up); median frame ms and the median
 /// summed CPU ms of the passes whose names start with `passPrefix`.
 Result<std::pair<double, double>> timeFrames(SssBenchContext& ctx, const std::string& passPrefix);
 
-/// Fills ctx.diffuse/position from the last frame (Diffuse and Position views) and convolves
-/// the reference, once.
+/// Fills ctx.diffuse/position from the last frame (Diffuse and Position views; with MSAA every
+/// covered pixel, silhouettes included, holds a real surface sample) and convolves the reference, once.
 Result<void> ensureReference(SssBenchContext& ctx);
 
-/// Compares the last frame's blurred diffuse (FrameView::BlurredDiffuse) with the reference.
+/// Compares the last frame's blurred diffuse (FrameView::BlurredDiffuse, its coverage weight
+/// removed) with the reference.
 Result<reference::ImageError> compareLastFrame(SssBenchContext& ctx);
 
 /// The separable method's rows: every kernel model at 7, 11, 17 and 25 taps, then rank-R kernels
