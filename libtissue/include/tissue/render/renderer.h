@@ -9,7 +9,8 @@
 ///
 /// The frame: shadow:<light> (one depth pass per shadow-casting light) -> clear -> one pass per
 /// shading method present (lit, separable:geometry, ...) into linear HDR targets -> resolve
-/// (MSAA only) -> method post passes (separable:blur-x, separable:blur-y) -> composite (HDR,
+/// (MSAA only) -> method post passes (separable:resolve with MSAA, separable:blur-x,
+/// separable:blur-y, and separable:blur-x:r / blur-y:r per further kernel component) -> composite (HDR,
 /// RGBA16F) -> tonemap (Reinhard, sRGB8) -> readback (offscreen only).
 
 #include <memory>
