@@ -2,11 +2,14 @@
 // component two 1D passes): linearity in the components with their signs, energy of an SVD
 // rank-2 kernel with a negative component, SVD rank 2 against rank 1 on the CPU reference; and
 // MSAA silhouettes, whose pixels must carry one real surface sample into the blur.
+#include <array>
 #include <cmath>
 
 #include "gl_test_support.h"
 #include "separable_scene.h"
 #include "test_scene.h"
+#include "tissue/gl/gl_api.h"
+#include "tissue/gl/objects.h"
 #include "tissue/optics/kernel.h"
 #include "tissue/reference/screen_convolution.h"
 
@@ -157,10 +160,28 @@ TEST_P(SeparableRankTest, RankRIsTheSignedSumOfItsComponentsRenderedAlone) {
   EXPECT_GT(patchPixels, kSize * kSize / 2);
   EXPECT_GT(change, 0.05);  // the other components matter (so the sum is a real check)
   EXPECT_LT(worst, 2e-3);   // relative to the terms' magnitudes
-  // The pass list: a pair per component of the frame's highest rank.
+  // The pass list: a pair per component of the frame's highest rank. The blended passes leave
+  // the host's blend function and equation as they were.
+  auto loaded = gl::loadGl(context->procAddressFunction());
+  ASSERT_TRUE(loaded);
+  const gl::GlApi& g = **loaded;
+  g.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_DST_COLOR, GL_ZERO);
+  g.BlendEquation(GL_FUNC_REVERSE_SUBTRACT);
   std::vector<std::string> names;
   scene.objects[0].method = rank3;
   ASSERT_TRUE(renderer->renderImage(scene, kSize, kSize));
+  GLint blend[5] = {};
+  for (int i = 0; i < 5; ++i)
+    g.GetIntegerv(std::array{GL_BLEND_SRC_RGB, GL_BLEND_DST_RGB, GL_BLEND_SRC_ALPHA, GL_BLEND_DST_ALPHA,
+                             GL_BLEND_EQUATION_RGB}[static_cast<std::size_t>(i)],
+                  &blend[i]);
+  EXPECT_EQ(blend[0], GL_SRC_ALPHA);
+  EXPECT_EQ(blend[1], GL_ONE_MINUS_SRC_ALPHA);
+  EXPECT_EQ(blend[2], GL_DST_COLOR);
+  EXPECT_EQ(blend[3], GL_ZERO);
+  EXPECT_EQ(blend[4], GL_FUNC_REVERSE_SUBTRACT);
+  g.BlendFunc(GL_ONE, GL_ZERO);
+  g.BlendEquation(GL_FUNC_ADD);
   for (const auto& p : renderer->lastTimings().passes)
     if (p.name.rfind("separable:blur", 0) == 0) names.push_back(p.name);
   EXPECT_EQ(names,
@@ -247,7 +268,21 @@ TEST_P(SeparableRankTest, MsaaSilhouettePixelsCarryARealSurfaceSampleAndNoBackgr
   render::SeparableSettings kernel = render::rankOneSeparable(gaussianTaps(4.0f, 25));
   kernel.followSurface = false;  // depth alone would hide a wrong id or colour at the edge
   scene.objects = {separableObject(*mesh, kernel)};
+  // A multisample texture the host has bound on the unit the resolve uses stays bound.
+  auto loaded = gl::loadGl(context->procAddressFunction());
+  ASSERT_TRUE(loaded);
+  const gl::GlApi& g = **loaded;
+  gl::Texture host = gl::Texture::create(g);
+  g.ActiveTexture(GL_TEXTURE3);
+  g.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, host.id());
+  g.TexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 4, GL_RGBA8, 4, 4, GL_TRUE);
   ASSERT_TRUE(renderer->renderImage(scene, kSize, kSize));
+  GLint bound = 0;
+  g.ActiveTexture(GL_TEXTURE3);
+  g.GetIntegerv(GL_TEXTURE_BINDING_2D_MULTISAMPLE, &bound);
+  EXPECT_EQ(static_cast<GLuint>(bound), host.id());
+  g.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+  g.ActiveTexture(GL_TEXTURE0);
   auto radiance = renderer->readFrame(render::FrameView::Radiance);
   auto diffuse = renderer->readFrame(render::FrameView::Diffuse);
   auto position = renderer->readFrame(render::FrameView::Position);

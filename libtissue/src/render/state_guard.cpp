@@ -25,6 +25,7 @@ StateGuard::StateGuard(const gl::GlApi& gl) : m_gl(gl) {
     gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
     gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &m_texture2d[unit]);
     gl.GetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &m_texture2dArray[unit]);
+    gl.GetIntegerv(GL_TEXTURE_BINDING_2D_MULTISAMPLE, &m_texture2dMultisample[unit]);
   }
   gl.ActiveTexture(static_cast<GLenum>(m_activeTexture));
   gl.GetIntegerv(GL_DEPTH_FUNC, &m_depthFunc);
@@ -42,6 +43,12 @@ StateGuard::StateGuard(const gl::GlApi& gl) : m_gl(gl) {
   m_depthTest = gl.IsEnabled(GL_DEPTH_TEST);
   m_cullFace = gl.IsEnabled(GL_CULL_FACE);
   m_blend = gl.IsEnabled(GL_BLEND);
+  gl.GetIntegerv(GL_BLEND_SRC_RGB, &m_blendSrcRgb);
+  gl.GetIntegerv(GL_BLEND_DST_RGB, &m_blendDstRgb);
+  gl.GetIntegerv(GL_BLEND_SRC_ALPHA, &m_blendSrcAlpha);
+  gl.GetIntegerv(GL_BLEND_DST_ALPHA, &m_blendDstAlpha);
+  gl.GetIntegerv(GL_BLEND_EQUATION_RGB, &m_blendEquationRgb);
+  gl.GetIntegerv(GL_BLEND_EQUATION_ALPHA, &m_blendEquationAlpha);
   m_scissorTest = gl.IsEnabled(GL_SCISSOR_TEST);
   m_srgb = gl.IsEnabled(GL_FRAMEBUFFER_SRGB);
   m_multisample = gl.IsEnabled(GL_MULTISAMPLE);
@@ -62,6 +69,7 @@ StateGuard::~StateGuard() {
     gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
     gl.BindTexture(GL_TEXTURE_2D, name(m_texture2d[unit]));
     gl.BindTexture(GL_TEXTURE_2D_ARRAY, name(m_texture2dArray[unit]));
+    gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, name(m_texture2dMultisample[unit]));
   }
   gl.ActiveTexture(static_cast<GLenum>(m_activeTexture));
   gl.DepthFunc(static_cast<GLenum>(m_depthFunc));
@@ -79,6 +87,10 @@ StateGuard::~StateGuard() {
   setEnabled(gl, GL_DEPTH_TEST, m_depthTest);
   setEnabled(gl, GL_CULL_FACE, m_cullFace);
   setEnabled(gl, GL_BLEND, m_blend);
+  gl.BlendFuncSeparate(static_cast<GLenum>(m_blendSrcRgb), static_cast<GLenum>(m_blendDstRgb),
+                       static_cast<GLenum>(m_blendSrcAlpha), static_cast<GLenum>(m_blendDstAlpha));
+  gl.BlendEquationSeparate(static_cast<GLenum>(m_blendEquationRgb),
+                           static_cast<GLenum>(m_blendEquationAlpha));
   setEnabled(gl, GL_SCISSOR_TEST, m_scissorTest);
   setEnabled(gl, GL_FRAMEBUFFER_SRGB, m_srgb);
   setEnabled(gl, GL_MULTISAMPLE, m_multisample);

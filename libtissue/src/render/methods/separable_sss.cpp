@@ -219,6 +219,7 @@ Result<void> SeparableMethod::post(const FrameContext& frame, std::span<const Ob
     g.BindTexture(GL_TEXTURE_2D, frame.targets.radiance());
     drawFullScreen(frame);
     g.Disable(GL_BLEND);
+    g.BlendFunc(GL_ONE, GL_ZERO);  // GL's default, for the passes after
     return gl::checkGlError(g, "renderer: separable blur pass");
   };
   // Per component r: "separable:blur-x" then "separable:blur-y" (r = 0), "separable:blur-x:r"
