@@ -22,7 +22,7 @@ struct BenchOptions {
   int width = 240;             // pixels
   int height = 180;            // pixels
   int referenceSamples = 200;  // CPU reference samples per pixel
-  int repeats = 5;             // frames timed per setting (median)
+  int repeats = 7;             // frames timed per setting (median)
   float pokeDepthMm = 8.0f;    // mm; 0 = undeformed
   bool closeUp = true;
   std::string images;                 // folder for the images, empty = none
@@ -56,44 +56,71 @@ Result<GpuRadiance> readRadiance(render::Renderer& renderer, std::span<const std
   return out;
 }
 
-// Mean samples per covered pixel: the samples-shown frame writes samples / 100 as radiance.
-Result<double> meanSamples(RayMarchRender& gpu, int width, int height, std::span<const std::uint8_t> mask) {
+// Mean samples per covered pixel: the samples-shown frame writes samples / 100 as radiance,
+// also returned as a grey image (white = 100 samples; black where uncovered).
+struct SampleCounts {
+  double mean = 0.0;
+  Image8 image;
+};
+
+Result<SampleCounts> meanSamples(RayMarchRender& gpu, int width, int height,
+                                 std::span<const std::uint8_t> mask) {
   gpu.settings().showSamples = true;
   auto shown = gpu.render(width, height);
   gpu.settings().showSamples = false;
   if (!shown) return shown.error();
   auto frame = gpu.renderer.readFrame(render::FrameView::Radiance);
   if (!frame) return frame.error();
-  double sum = 0.0;
+  SampleCounts out{0.0, Image8(width, height, 4)};
   std::size_t n = 0;
-  for (std::size_t i = 0; i < mask.size(); ++i)
-    if (mask[i]) sum += std::round(double(frame->pixels[i].x) * 100.0), ++n;
-  return n ? sum / double(n) : 0.0;
+  for (std::size_t i = 0; i < mask.size(); ++i) {
+    const double samples = std::round(double(frame->pixels[i].x) * 100.0);
+    if (mask[i]) out.mean += samples, ++n;
+    const auto grey = std::uint8_t(std::lround(std::clamp(samples / 100.0, 0.0, 1.0) * 255.0));
+    std::uint8_t* px = out.image.at(int(i) % width, int(i) / width);
+    px[0] = px[1] = px[2] = grey;
+    px[3] = 255;
+  }
+  out.mean = n ? out.mean / double(n) : 0.0;
+  return out;
 }
 
-// One setting: `repeats` timed frames after a warm-up; ms = median of the "ray-march" pass
-// (CPU wall clock to completion, glFinish), gpu_ms = median of its timer query where valid.
-struct Timed {
-  Image8 image;
+// The settings of the table: 10, 25, 50, 100 samples and adaptive (0).
+constexpr int kSettings[] = {10, 25, 50, 100, 0};
+
+render::RayMarchSettings settingFor(int n, const render::RayMarchSettings& adaptive) {
+  render::RayMarchSettings s = adaptive;
+  s.samples = n;
+  s.adaptive = n == 0;
+  s.radianceScale = kRayMarchRadianceScale;
+  return s;
+}
+
+// Times every setting: one warm-up frame each (allocation, shader caches), then `repeats`
+// rounds of one frame per setting, interleaved so that a change in the machine's load falls on
+// every setting alike. ms = median of the "ray-march" pass (CPU wall clock to completion,
+// glFinish); gpu_ms = median of its timer query where valid (-1 if never).
+struct Timing {
   double ms = 0.0, gpuMs = -1.0;
 };
 
-Result<Timed> timeSetting(RayMarchRender& gpu, int width, int height, int repeats) {
-  std::vector<double> ms, gpuMs;
-  Timed out;
-  for (int r = 0; r < repeats + 1; ++r) {  // the first frame warms up (allocation, shader caches)
-    double pass = 0.0;
-    auto frame = gpu.render(width, height, &pass);
-    if (!frame) return frame.error();
-    if (r > 0) {
-      ms.push_back(pass);
+Result<std::vector<Timing>> timeSettings(RayMarchRender& gpu, const BenchOptions& o) {
+  const std::size_t count = std::size(kSettings);
+  std::vector<std::vector<double>> ms(count), gpuMs(count);
+  for (int r = 0; r < o.repeats + 1; ++r) {
+    for (std::size_t k = 0; k < count; ++k) {
+      gpu.setMarch(settingFor(kSettings[k], o.adaptive));
+      double pass = 0.0;
+      if (auto frame = gpu.render(o.width, o.height, &pass); !frame) return frame.error();
+      if (r == 0) continue;
+      ms[k].push_back(pass);
       const render::PassTiming* t = gpu.renderer.lastTimings().find("ray-march");
-      if (t && t->gpuMs >= 0.0) gpuMs.push_back(t->gpuMs);
+      if (t && t->gpuMs >= 0.0) gpuMs[k].push_back(t->gpuMs);
     }
-    out.image = std::move(*frame);
   }
-  out.ms = median(ms);
-  out.gpuMs = median(gpuMs);
+  std::vector<Timing> out;
+  for (std::size_t k = 0; k < count; ++k)
+    out.push_back({median(ms[k]), median(gpuMs[k])});
   return out;
 }
 
@@ -134,39 +161,39 @@ int run(BenchOptions o, const GlobalOptions& global) {
   std::vector<Float3> hundred;
   double hundredMs = 0.0;
   std::vector<std::uint8_t> mask;
-  const int fixed[] = {10, 25, 50, 100, 0};
-  for (int n : fixed) {
-    render::RayMarchSettings s = o.adaptive;
-    s.samples = n;
-    s.adaptive = n == 0;
-    s.radianceScale = kRayMarchRadianceScale;
-    gpu->setMarch(s);
-    auto timed = timeSetting(*gpu, o.width, o.height, o.repeats);
-    if (!timed) return fail(cmd, timed.error().message);
+  auto timings = timeSettings(*gpu, o);
+  if (!timings) return fail(cmd, timings.error().message);
+  for (std::size_t k = 0; k < std::size(kSettings); ++k) {
+    const int n = kSettings[k];
+    gpu->setMarch(settingFor(n, o.adaptive));
+    auto image = gpu->render(o.width, o.height);
+    if (!image) return fail(cmd, image.error().message);
     auto radiance = readRadiance(gpu->renderer, reference.covered);
     if (!radiance) return fail(cmd, radiance.error().message);
     if (mask.empty()) mask = radiance->mask;  // one mask for every row: the first frame's coverage
     nlohmann::json row;
     row["setting"] = n == 0 ? "adaptive" : std::to_string(n);
-    row["ms"] = timed->ms;
-    row["gpu_ms"] = timed->gpuMs;
-    row["image_rms"] = subsurface::displayRms(timed->image, referenceImage, mask);
+    row["ms"] = (*timings)[k].ms;
+    row["gpu_ms"] = (*timings)[k].gpuMs;
+    row["image_rms"] = subsurface::displayRms(*image, referenceImage, mask);
     row["radiance_rel_rms"] = subsurface::relativeRadianceRms(radiance->radiance, reference.radiance, mask);
-    if (n == 100) hundredImage = timed->image, hundred = radiance->radiance, hundredMs = timed->ms;
+    if (n == 100) hundredImage = *image, hundred = radiance->radiance, hundredMs = (*timings)[k].ms;
     if (n == 0) {
       auto samples = meanSamples(*gpu, o.width, o.height, mask);
       if (!samples) return fail(cmd, samples.error().message);
-      row["samples"] = *samples;
-      row["rms_vs_100"] = subsurface::displayRms(timed->image, hundredImage, mask);
+      row["samples"] = samples->mean;
+      if (!o.images.empty())
+        (void)writePng(std::filesystem::path(o.images) / "raymarch_samples.png", samples->image);
+      row["rms_vs_100"] = subsurface::displayRms(*image, hundredImage, mask);
       row["radiance_rel_rms_vs_100"] = subsurface::relativeRadianceRms(radiance->radiance, hundred, mask);
-      row["ms_ratio_vs_100"] = hundredMs > 0.0 ? timed->ms / hundredMs : -1.0;
+      row["ms_ratio_vs_100"] = hundredMs > 0.0 ? (*timings)[k].ms / hundredMs : -1.0;
     } else {
       row["samples"] = n;
     }
     if (!o.images.empty())
       (void)writePng(
           std::filesystem::path(o.images) / ("raymarch_" + row["setting"].get<std::string>() + ".png"),
-          timed->image);
+          *image);
     results.push_back(row);
   }
   // Step 4: the method against its CPU twin (plane mode, same jitter and sample count), in
@@ -262,7 +289,7 @@ void registerRayMarchBenchCommand(CLI::App& app, const GlobalOptions& global, in
   cmd->add_option("--width", o->width, "image width, pixels (default 240)");
   cmd->add_option("--height", o->height, "image height, pixels (default 180)");
   cmd->add_option("--reference-samples", o->referenceSamples, "CPU reference samples (default 200)");
-  cmd->add_option("--repeats", o->repeats, "timed frames per setting, median (default 5)");
+  cmd->add_option("--repeats", o->repeats, "timed frames per setting, median (default 7)");
   cmd->add_option("--poke-depth", o->pokeDepthMm, "poke depth, mm (default 8; 0 = rest shape)");
   cmd->add_flag("!--whole", o->closeUp, "frame the whole organ instead of a close-up of the poke site");
   cmd->add_option("--depth-resolution", o->adaptive.depthResolutionMm,
