@@ -1,10 +1,12 @@
 // Single scattering by ray marching (François et al. 2006 eq. 5, Algorithms 1 and 2; Norberg
 // 2010 §2.1, §3.1). The same model, step for step, as the CPU code in
 // libtissue/src/subsurface/single_scattering.cpp (plane mode); keep the two in step.
-// Lengths in mm, coefficients in mm^-1.
+// Lengths in mm, coefficients in mm^-1. The lights are the scene's (common/lights.glsl): a point
+// light's direction is taken per sample M, a directional light's is the same everywhere.
+
+#include "common/lights.glsl"
 
 #define TISSUE_MAX_LAYERS 9      // 4N + 1 for N <= 2 RGBA maps
-#define TISSUE_MAX_LIGHTS 4
 #define TISSUE_MAX_SAMPLES 256
 
 uniform int u_layerCount;                      // 4N + 1
@@ -20,9 +22,6 @@ uniform float u_depthMax;                      // Depth_max of eq. 15, mm
 uniform float u_tMaxCap;                       // -ln(threshold) / min sigma_t, mm (1e30 without)
 uniform float u_threshold;                     // stop once exp(-tau_PM) falls below (0: never)
 uniform float u_minCosView;                    // clamp of N_S . omega_out
-uniform int u_lightCount;
-uniform vec3 u_lightPosition[TISSUE_MAX_LIGHTS];  // mm
-uniform vec3 u_lightRadiance[TISSUE_MAX_LIGHTS];  // linear RGB
 
 const float kPi = 3.14159265358979;
 
@@ -72,10 +71,9 @@ vec2 uvAt(Frame f, vec3 X) {
   return f.uv + vec2(dot(PX, f.T), dot(PX, f.B)) * u_uvPerMm;
 }
 
-// exp(-tau_KM) for the light at S seen from M at distance t (Algorithm 2, eq. 9-10; Norberg
-// eq. 13-14 with the max(., 0) fix).
-vec3 reducedIntensity(Frame f, float bM[8], vec3 M, float t, vec3 S) {
-  vec3 wi = normalize(S - M);
+// exp(-tau_KM) for light arriving along -wi (wi unit, from M towards the light) at M, at distance
+// t along the viewing ray (Algorithm 2, eq. 9-10; Norberg eq. 13-14 with the max(., 0) fix).
+vec3 reducedIntensity(Frame f, float bM[8], vec3 M, float t, vec3 wi) {
   float w = f.tMax > 0.0 ? t / f.tMax : 0.0;
   vec3 NM = normalize((1.0 - w) * f.Np + w * f.Ns);  // eq. 9: tangent plane at P
   vec3 PM = (1.0 - w) * f.P + w * f.PS;
@@ -126,11 +124,11 @@ vec4 marchSingleScattering(Frame f, int n, float jitter) {
     sampleBoundaries(uvAt(f, M), bM);
     int layer = min(findLayer(bM, t * f.cosDepth), u_layerCount - 1);
     attenuation *= exp(-u_sigmaT[layer] * (i == 0 ? jitter * dt : dt));
-    for (int l = 0; l < TISSUE_MAX_LIGHTS; ++l) {
+    for (int l = 0; l < MAX_LIGHTS; ++l) {
       if (l >= u_lightCount) break;
-      vec3 wi = normalize(u_lightPosition[l] - M);
+      vec3 wi = lightDirection(l, M);
       float phase = schlickPhase(-dot(wi, f.wo), u_schlickK[layer]);
-      vec3 Lri = u_lightRadiance[l] * reducedIntensity(f, bM, M, t, u_lightPosition[l]);
+      vec3 Lri = u_lightRadiance[l] * reducedIntensity(f, bM, M, t, wi);
       L += u_sigmaS[layer] * phase * Lri * attenuation * dt;
     }
     used = i + 1;

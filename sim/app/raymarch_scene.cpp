@@ -84,20 +84,74 @@ void pokeScene(RayMarchScene& scene, double fraction, float depthMm) {
   scene.owned->update(positions);
 }
 
-render::RayMarchMaterial gpuMaterial(const RayMarchScene& scene) {
-  render::RayMarchMaterial m;
-  for (const auto& l : scene.stack.layers)
-    m.layers.push_back({l.sigma_s, l.sigma_t, float(optics::schlickKFromG(l.g))});
-  m.subsurfaceMaps = {scene.subsurfaceMap};
-  m.depthScaleMm = scene.stack.depthScaleMm;
-  m.uvPerMm = scene.uvPerMm;
-  return m;
+std::vector<render::Light> pipelineLights(const RayMarchScene& scene) {
+  std::vector<render::Light> out;
+  for (const auto& l : scene.lights) {
+    render::Light light;
+    light.type = render::LightType::Point;
+    light.positionMm = l.positionMm;
+    light.color = l.radiance;
+    light.intensity = 1.0f;
+    out.push_back(light);
+  }
+  return out;
 }
 
-std::vector<render::RayMarchLight> gpuLights(const RayMarchScene& scene) {
-  std::vector<render::RayMarchLight> out;
-  for (const auto& l : scene.lights)
-    out.push_back({l.positionMm, l.radiance});
+render::RayMarchSettings withMaterial(render::RayMarchSettings march, const RayMarchScene& scene,
+                                      render::TextureHandle map) {
+  march.layers.clear();
+  for (const auto& l : scene.stack.layers)
+    march.layers.push_back({l.sigma_s, l.sigma_t, float(optics::schlickKFromG(l.g))});
+  march.subsurfaceMaps = {map};
+  march.depthScaleMm = scene.stack.depthScaleMm;
+  march.uvPerMm = scene.uvPerMm;
+  return march;
+}
+
+void RayMarchRender::setMarch(const render::RayMarchSettings& march) {
+  const render::RayMarchSettings material = settings();
+  settings() = march;
+  settings().layers = material.layers;
+  settings().subsurfaceMaps = material.subsurfaceMaps;
+  settings().depthScaleMm = material.depthScaleMm;
+  settings().uvPerMm = material.uvPerMm;
+}
+
+Result<void> RayMarchRender::upload(const mesh::DeformableSurface& s) {
+  return renderer.updateMesh(mesh, {0, s.positions(), s.normals(), s.tangents(), s.planes()});
+}
+
+Result<Image8> RayMarchRender::render(int width, int height, double* passMs) {
+  auto image = renderer.renderImage(scene, width, height);
+  if (image && passMs) {
+    const render::PassTiming* pass = renderer.lastTimings().find("ray-march");
+    *passMs = pass ? pass->cpuMs : -1.0;
+  }
+  return image;
+}
+
+Result<RayMarchRender> makeRayMarchRender(const RayMarchScene& scene,
+                                          const gl::GetProcAddressFn& getProcAddress,
+                                          const render::RendererSettings& settings) {
+  auto renderer = render::Renderer::create(getProcAddress, settings);
+  if (!renderer) return renderer.error();
+  const auto& s = *scene.surface;
+  auto mesh =
+      renderer->createMesh({s.positions(), s.normals(), s.tangents(), s.uvs(), s.triangles(), s.planes()});
+  if (!mesh) return mesh.error();
+  auto map = renderer->createTexture(scene.subsurfaceMap, render::TextureEncoding::LinearData);
+  if (!map) return map.error();
+  RayMarchRender out{std::move(*renderer), *mesh, *map, {}};
+  out.scene.camera = scene.camera;
+  out.scene.lights = pipelineLights(scene);
+  out.scene.background = kRayMarchBackground;
+  out.scene.exposure = 1.0f;
+  render::SceneObject organ;
+  organ.mesh = *mesh;
+  render::RayMarchSettings march;
+  march.radianceScale = kRayMarchRadianceScale;
+  organ.method = withMaterial(march, scene, *map);
+  out.scene.objects.push_back(organ);
   return out;
 }
 
@@ -110,40 +164,28 @@ subsurface::PinholeCamera pinholeOf(const render::Camera& camera) {
   return {camera.eye, camera.target, camera.up, camera.verticalFovDeg};
 }
 
-Result<render::RayMarchRenderer> makeRayMarchRenderer(const RayMarchScene& scene,
-                                                      const gl::GetProcAddressFn& getProcAddress) {
-  auto renderer = render::RayMarchRenderer::create(getProcAddress);
-  if (!renderer) return renderer.error();
-  const auto& s = *scene.surface;
-  if (auto r = renderer->setMesh({s.positions(), s.normals(), s.tangents(), s.uvs(), s.triangles(), {}},
-                                 s.planes());
-      !r)
-    return r.error();
-  if (auto r = renderer->setMaterial(gpuMaterial(scene)); !r) return r.error();
-  return renderer;
-}
-
-Result<nlohmann::json> renderRayMarchPng(const RayMarchScene& scene,
-                                         const render::RayMarchRenderSettings& settings, int width,
-                                         int height, const std::filesystem::path& png) {
+Result<nlohmann::json> renderRayMarchPng(const RayMarchScene& scene, const render::RayMarchSettings& march,
+                                         int width, int height, const std::filesystem::path& png) {
   context::ContextRequest request;
   request.width = request.height = 16;  // the renderer draws into its own framebuffer
   auto context = context::createHeadlessContext(request);
   if (!context) return context.error();
-  auto renderer = makeRayMarchRenderer(scene, (*context)->procAddressFunction());
-  if (!renderer) return renderer.error();
-  auto image = renderer->renderImage(scene.camera, gpuLights(scene), settings, width, height);
+  auto gpu = makeRayMarchRender(scene, (*context)->procAddressFunction());
+  if (!gpu) return gpu.error();
+  gpu->setMarch(march);
+  double passMs = 0.0;
+  auto image = gpu->render(width, height, &passMs);
   if (!image) return image.error();
   if (auto w = writePng(png, *image); !w) return w.error();
   nlohmann::json out;
   out["out"] = png.string();
-  out["draw_ms"] = renderer->lastDrawMs();
+  out["pass_ms"] = passMs;
   out["gl_renderer"] = (*context)->info().renderer;
-  out["adaptive"] = settings.adaptive;
-  if (settings.adaptive)
-    out["max_samples"] = settings.maxSamples;
+  out["adaptive"] = march.adaptive;
+  if (march.adaptive)
+    out["max_samples"] = march.maxSamples;
   else
-    out["samples"] = settings.samples;
+    out["samples"] = march.samples;
   return out;
 }
 
@@ -151,9 +193,10 @@ int runRayMarchRender(const std::string& meshFile, const std::string& png, int w
                       bool adaptive, const GlobalOptions& global) {
   auto scene = loadRayMarchScene(meshFile, float(width) / float(height), false);
   if (!scene) return fail("render", scene.error().message);
-  render::RayMarchRenderSettings settings;
+  render::RayMarchSettings settings;
   settings.samples = std::clamp(samples, 1, 256);
   settings.adaptive = adaptive;
+  settings.radianceScale = kRayMarchRadianceScale;
   auto done = renderRayMarchPng(*scene, settings, width, height, png);
   if (!done) return fail("render", done.error().message);
   (*done)["method"] = "raymarch";
@@ -168,8 +211,9 @@ nlohmann::json renderPokedOrganRayMarch(const mesh::DeformableSurface& surface, 
     auto scene = rayMarchSceneFor(surface, stem, float(width) / float(height), closeUp);
     if (!scene) return {{"skipped", scene.error().message}};
     // Adaptive quality: a quarter of the 100-sample cost (docs/RESULTS.md), so the main job stays quick.
-    render::RayMarchRenderSettings settings;
+    render::RayMarchSettings settings;
     settings.adaptive = true;
+    settings.radianceScale = kRayMarchRadianceScale;
     const std::string name = std::string("frame_poked_raymarch") + (closeUp ? "_closeup" : "") + ".png";
     auto done = renderRayMarchPng(*scene, settings, width, height, outDir / name);
     if (!done) return {{"skipped", done.error().message}};

@@ -2,7 +2,7 @@
 /// \file
 /// What the ray-marching commands share: an organ of the project's data with its layer stack,
 /// camera and lights, and the conversions between the GL-free model (tissue::subsurface) and
-/// the GPU renderer (tissue::render::RayMarchRenderer). Lengths in mm.
+/// the render pipeline's ray-march method (render::RayMarchSettings). Lengths in mm.
 
 #include <filesystem>
 #include <memory>
@@ -14,11 +14,17 @@
 #include "tissue/core/image.h"
 #include "tissue/core/result.h"
 #include "tissue/mesh/deformable_surface.h"
-#include "tissue/render/raymarch_renderer.h"
+#include "tissue/render/renderer.h"
 #include "tissue/render/scene.h"
 #include "tissue/subsurface/reference_image.h"
 
 namespace tissue::sim_app {
+
+/// The display of ray-marched images: radiance times this (RayMarchSettings::radianceScale's
+/// default), then the pipeline's tone map at exposure 1; the CPU images use the same.
+inline constexpr float kRayMarchRadianceScale = 8.0f;
+/// sRGB background of the ray-marched images (render::Scene's default).
+inline constexpr Float3 kRayMarchBackground{0.05f, 0.05f, 0.06f};
 
 /// An organ ready for ray marching.
 struct RayMarchScene {
@@ -45,9 +51,35 @@ Result<RayMarchScene> rayMarchSceneFor(const mesh::DeformableSurface& surface, c
 /// the vertices) and updates the surface (planes re-fitted incrementally). Needs a loaded scene.
 void pokeScene(RayMarchScene& scene, double fraction, float depthMm);
 
-/// The GPU renderer's material and lights.
-render::RayMarchMaterial gpuMaterial(const RayMarchScene& scene);
-std::vector<render::RayMarchLight> gpuLights(const RayMarchScene& scene);
+/// The scene's lights as the pipeline's point lights (colour = radiance, intensity 1, no shadows).
+std::vector<render::Light> pipelineLights(const RayMarchScene& scene);
+
+/// `march` (the march and adaptive-quality fields) with the scene's material: its layers (Schlick
+/// k from g), the uploaded subsurface map `map`, depth scale and uvPerMm.
+render::RayMarchSettings withMaterial(render::RayMarchSettings march, const RayMarchScene& scene,
+                                      render::TextureHandle map);
+
+/// A pipeline renderer holding the scene's organ (planes included) and subsurface map, and a
+/// render::Scene with the organ as its one ray-march object. Needs the context current.
+struct RayMarchRender {
+  render::Renderer renderer;
+  render::MeshHandle mesh;
+  render::TextureHandle map;
+  render::Scene scene;
+  /// The organ's method settings.
+  render::RayMarchSettings& settings() { return std::get<render::RayMarchSettings>(scene.objects[0].method); }
+  /// Sets the march and adaptive-quality fields of `march`, keeping the material.
+  void setMarch(const render::RayMarchSettings& march);
+  /// Re-uploads the surface's positions, normals, tangents and planes (all vertices).
+  Result<void> upload(const mesh::DeformableSurface& surface);
+  /// Renders `width` x `height` pixels; the "ray-march" pass's CPU ms (to completion) in `passMs`.
+  Result<Image8> render(int width, int height, double* passMs = nullptr);
+};
+
+/// Creates the renderer for `scene` on the current context.
+Result<RayMarchRender> makeRayMarchRender(const RayMarchScene& scene,
+                                          const gl::GetProcAddressFn& getProcAddress,
+                                          const render::RendererSettings& settings = {});
 
 /// The CPU model's view of the surface and camera.
 subsurface::MeshView meshView(const RayMarchScene& scene);
@@ -55,9 +87,9 @@ subsurface::PinholeCamera pinholeOf(const render::Camera& camera);
 
 /// Renders `scene` with ray-marched single scattering on a new headless context into `png`
 /// (written atomically), `width` x `height` pixels; returns what it did (ms, context).
-Result<nlohmann::json> renderRayMarchPng(const RayMarchScene& scene,
-                                         const render::RayMarchRenderSettings& settings, int width,
-                                         int height, const std::filesystem::path& png);
+/// `march` gives the march and adaptive-quality fields (the material is the scene's).
+Result<nlohmann::json> renderRayMarchPng(const RayMarchScene& scene, const render::RayMarchSettings& march,
+                                         int width, int height, const std::filesystem::path& png);
 
 /// `tissue-sim render --method raymarch`: the whole organ of data/ mesh `meshFile`; prints the
 /// result like every command and returns the exit code.
@@ -69,9 +101,5 @@ int runRayMarchRender(const std::string& meshFile, const std::string& png, int w
 /// Returns the report entry (images written, or why they were skipped).
 nlohmann::json renderPokedOrganRayMarch(const mesh::DeformableSurface& surface, const std::string& stem,
                                         const std::filesystem::path& outDir, int width, int height);
-
-/// A renderer for the scene (mesh and material uploaded); the context must be current.
-Result<render::RayMarchRenderer> makeRayMarchRenderer(const RayMarchScene& scene,
-                                                      const gl::GetProcAddressFn& getProcAddress);
 
 }  // namespace tissue::sim_app

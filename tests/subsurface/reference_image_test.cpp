@@ -69,5 +69,24 @@ TEST(ReferenceImage, DisplayTransformAndRms) {
   EXPECT_NEAR(displayRms(a, b, mask), 0.2 / std::sqrt(3.0), 1e-9);
 }
 
+TEST(ReferenceImage, RelativeRadianceRmsIsScaleFreeAndMasked) {
+  const std::vector<Float3> reference = {{1.0f, 2.0f, 3.0f}, {0.5f, 0.5f, 0.5f}, {4.0f, 0.0f, 1.0f}};
+  std::vector<Float3> brighter;
+  for (const Float3& r : reference)
+    brighter.push_back({1.1f * r.x, 1.1f * r.y, 1.1f * r.z});
+  EXPECT_EQ(relativeRadianceRms(reference, reference), 0.0);
+  EXPECT_NEAR(relativeRadianceRms(brighter, reference), 0.1, 1e-6) << "10% brighter everywhere";
+  // Only the masked pixel counts: an error elsewhere does not show.
+  std::vector<Float3> wrongElsewhere = reference;
+  wrongElsewhere[0] = {9.0f, 9.0f, 9.0f};
+  const std::vector<std::uint8_t> mask = {0, 1, 1};
+  EXPECT_EQ(relativeRadianceRms(wrongElsewhere, reference, mask), 0.0);
+  EXPECT_GT(relativeRadianceRms(wrongElsewhere, reference), 1.0);
+  // Mismatched sizes and a black reference have no answer.
+  EXPECT_EQ(relativeRadianceRms(std::span(reference).first(2), reference), -1.0);
+  const std::vector<Float3> black(3, Float3{0.0f, 0.0f, 0.0f});
+  EXPECT_EQ(relativeRadianceRms(reference, black), -1.0);
+}
+
 }  // namespace
 }  // namespace tissue::subsurface

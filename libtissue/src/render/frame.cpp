@@ -136,7 +136,7 @@ Result<void> Renderer::Impl::renderFrame(const Scene& scene, int width, int heig
         r = textureSpace.draw(frame, group);
         break;
       case ShadingMethod::RayMarch:
-        r = rayMarch.draw(frame, group);
+        r = rayMarch.draw(frame, group, textures);
         break;
       case ShadingMethod::Parallax:
         r = parallax.draw(frame, group);

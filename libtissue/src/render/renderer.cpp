@@ -96,13 +96,14 @@ void Renderer::destroyMesh(MeshHandle mesh) {
   m_impl->meshes.erase(mesh.id);
 }
 
-Result<TextureHandle> Renderer::createTexture(const Image8& image) {
+Result<TextureHandle> Renderer::createTexture(const Image8& image, TextureEncoding encoding) {
   StateGuard guard(m_impl->gl());
   gl::Texture texture;
   m_impl->gl().ActiveTexture(GL_TEXTURE0);
-  if (auto r = uploadTexture(m_impl->gl(), texture, image); !r) return r.error();
+  if (auto r = uploadTexture(m_impl->gl(), texture, image, encoding); !r) return r.error();
   const TextureHandle handle{m_impl->nextId++};
   m_impl->textures.emplace(handle.id, std::move(texture));
+  if (encoding != TextureEncoding::Srgb) m_impl->textureEncodings[handle.id] = encoding;
   return handle;
 }
 
@@ -114,11 +115,14 @@ Result<void> Renderer::updateTexture(TextureHandle texture, const Image8& image)
   }
   StateGuard guard(m_impl->gl());
   m_impl->gl().ActiveTexture(GL_TEXTURE0);
-  return uploadTexture(m_impl->gl(), it->second, image);
+  const auto encoding = m_impl->textureEncodings.find(texture.id);
+  return uploadTexture(m_impl->gl(), it->second, image,
+                       encoding == m_impl->textureEncodings.end() ? TextureEncoding::Srgb : encoding->second);
 }
 
 void Renderer::destroyTexture(TextureHandle texture) {
   m_impl->textures.erase(texture.id);
+  m_impl->textureEncodings.erase(texture.id);
 }
 
 Result<void> Renderer::setMesh(const MeshArrays& mesh) {

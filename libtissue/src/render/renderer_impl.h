@@ -33,6 +33,7 @@ struct Renderer::Impl {
   // Resources by handle id.
   std::map<std::uint32_t, MeshBuffers> meshes;
   std::map<std::uint32_t, gl::Texture> textures;
+  std::map<std::uint32_t, TextureEncoding> textureEncodings;  // those not Srgb (updateTexture keeps them)
   std::uint32_t nextId = 1;
   gl::Texture defaultBaseColor;
   gl::VertexArray emptyVertexArray;

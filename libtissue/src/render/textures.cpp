@@ -25,7 +25,8 @@ Image8 toRgba(const Image8& image) {
 
 }  // namespace
 
-Result<void> uploadTexture(const gl::GlApi& gl, gl::Texture& texture, const Image8& image) {
+Result<void> uploadTexture(const gl::GlApi& gl, gl::Texture& texture, const Image8& image,
+                           TextureEncoding encoding) {
   if (image.width <= 0 || image.height <= 0 || image.channels < 1 || image.channels > 4 ||
       image.pixels.size() != static_cast<std::size_t>(image.width) * image.height * image.channels) {
     return Error{"renderer: texture image is empty or malformed (" + std::to_string(image.width) + "x" +
@@ -43,6 +44,16 @@ Result<void> uploadTexture(const gl::GlApi& gl, gl::Texture& texture, const Imag
   flipVertically(flipped);
   gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, rgba.width, rgba.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                 flipped.pixels.data());
+  if (encoding == TextureEncoding::LinearData) {
+    // Data as the CPU models read it: bilinear between texel centres, clamped at the edges.
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return gl::checkGlError(gl, "renderer: data texture upload");
+  }
+  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 1000);
   gl.GenerateMipmap(GL_TEXTURE_2D);
   gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);

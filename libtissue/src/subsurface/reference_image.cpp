@@ -169,4 +169,17 @@ double displayRms(const Image8& a, const Image8& b, std::span<const std::uint8_t
   return n > 0 ? std::sqrt(sum / double(n)) : 0.0;
 }
 
+double relativeRadianceRms(std::span<const Float3> a, std::span<const Float3> reference,
+                           std::span<const std::uint8_t> mask) {
+  if (a.size() != reference.size() || (!mask.empty() && mask.size() != a.size())) return -1.0;
+  double diff = 0.0, norm = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (!mask.empty() && !mask[i]) continue;
+    const glm::dvec3 r = d3(reference[i]), d = d3(a[i]) - r;
+    diff += glm::dot(d, d);
+    norm += glm::dot(r, r);
+  }
+  return norm > 0.0 ? std::sqrt(diff / norm) : -1.0;
+}
+
 }  // namespace tissue::subsurface

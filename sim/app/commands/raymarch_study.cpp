@@ -54,7 +54,6 @@ Result<nlohmann::json> study(const Case& c, const StudyOptions& o) {
   if (!loaded) return loaded.error();
   RayMarchScene& scene = *loaded;
   if (c.pokeDepthMm > 0.0f) pokeScene(scene, 0.02, c.pokeDepthMm);
-  const render::RayMarchRenderSettings display;
   auto image = [&](subsurface::EntryMode entry, int samples, bool jitter) {
     subsurface::CpuImageSettings s;
     s.width = o.width;
@@ -69,9 +68,9 @@ Result<nlohmann::json> study(const Case& c, const StudyOptions& o) {
   const auto ref = image(subsurface::EntryMode::Mesh, o.referenceSamples, false);
   const auto planes = image(subsurface::EntryMode::Planes, o.referenceSamples, false);
   const auto few = image(subsurface::EntryMode::Planes, 10, true);
-  const Image8 refImage = subsurface::toDisplay(ref, display.exposure, display.background);
-  const Image8 planesImage = subsurface::toDisplay(planes, display.exposure, display.background);
-  const Image8 fewImage = subsurface::toDisplay(few, display.exposure, display.background);
+  const Image8 refImage = subsurface::toDisplay(ref, kRayMarchRadianceScale, kRayMarchBackground);
+  const Image8 planesImage = subsurface::toDisplay(planes, kRayMarchRadianceScale, kRayMarchBackground);
+  const Image8 fewImage = subsurface::toDisplay(few, kRayMarchRadianceScale, kRayMarchBackground);
   nlohmann::json row;
   row["case"] = c.name;
   row["what"] = c.what;

@@ -77,6 +77,16 @@ struct RenderTimings {
   const PassTiming* find(const std::string& name) const;
 };
 
+/// How a texture's 8-bit values are read.
+enum class TextureEncoding {
+  /// Colour (base colour; shaders decode sRGB themselves) and normal maps: mipmapped, trilinear,
+  /// repeating.
+  Srgb,
+  /// Data read as stored, 0..1 linear (e.g. the ray-march method's subsurface maps of layer
+  /// depths): bilinear without mip-maps (a mip level would average depths), clamped at the edges.
+  LinearData,
+};
+
 /// Creation settings.
 struct RendererSettings {
   gl::ShaderLibrarySettings shaders;  ///< where GLSL comes from (embedded, or an override folder)
@@ -120,9 +130,10 @@ class Renderer {
   Result<void> updateMesh(MeshHandle mesh, const MeshUpdate& update);
   /// Frees a mesh; scenes must no longer name it.
   void destroyMesh(MeshHandle mesh);
-  /// Uploads a texture (1-4 channels, mipmapped, repeating). Colour textures are sRGB-encoded.
-  Result<TextureHandle> createTexture(const Image8& image);
-  /// Replaces a texture's image.
+  /// Uploads a texture (1-4 channels). Colour textures are sRGB-encoded (mipmapped, repeating);
+  /// data textures take TextureEncoding::LinearData.
+  Result<TextureHandle> createTexture(const Image8& image, TextureEncoding encoding = TextureEncoding::Srgb);
+  /// Replaces a texture's image (keeping the encoding it was created with).
   Result<void> updateTexture(TextureHandle texture, const Image8& image);
   /// Frees a texture; scenes must no longer name it.
   void destroyTexture(TextureHandle texture);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tissue/core/types.h"
+#include "tissue/render/handles.h"
 #include "tissue/render/shading.h"
 
 namespace tissue::render {
@@ -44,18 +45,6 @@ struct Material {
   float specular = 0.04f;                 ///< unitless specular reflectance, 0..1 (moist tissue ~0.02-0.05)
   float shininess = 64.0f;                ///< Blinn-Phong exponent, unitless
   Float3 ambient{0.06f, 0.055f, 0.055f};  ///< linear RGB ambient radiance
-};
-
-/// A mesh uploaded to a renderer (Renderer::createMesh); 0 = none.
-struct MeshHandle {
-  std::uint32_t id = 0;
-  explicit operator bool() const { return id != 0; }
-};
-
-/// A texture uploaded to a renderer (Renderer::createTexture); 0 = none (a default is used).
-struct TextureHandle {
-  std::uint32_t id = 0;
-  explicit operator bool() const { return id != 0; }
 };
 
 /// One object of the scene: mesh, textures, material and shading method.

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "tissue/core/types.h"
+#include "tissue/render/handles.h"
 
 namespace tissue::render {
 
@@ -63,8 +64,50 @@ inline SeparableSettings rankOneSeparable(std::vector<Float4> taps) {
 
 /// Texture-space diffusion (d'Eon et al. 2007). Not in this build: branch `tsd`.
 struct TextureSpaceSettings {};
-/// Ray-marched subsurface texture mapping (François et al.). Not in this build: branch `raymarch`.
-struct RayMarchSettings {};
+/// One layer of a ray-marched material (François et al. 2006, Table 1).
+struct RayMarchLayer {
+  Float3 sigma_s{1.0f, 1.0f, 2.0f};  ///< scattering coefficient per RGB channel, mm^-1
+  Float3 sigma_t{1.5f, 1.5f, 2.5f};  ///< extinction coefficient per RGB channel, mm^-1 (>= sigma_s)
+  float schlickK = 0.0f;             ///< Schlick phase parameter, unitless (-1, 1) (optics::schlickKFromG(g))
+};
+
+/// Ray-marched subsurface texture mapping (François et al. 2006, Algorithms 1-2; Norberg 2010
+/// §2.1, §3.1): single scattering through a layer stack whose boundary depths come from RGBA
+/// subsurface maps, the light's entry found through the mesh's per-vertex fitted planes
+/// interpolated across each triangle (eq. 9-10, 14-15), straight into the HDR radiance target.
+/// The object's mesh must carry planes (MeshArrays::planes, updated every frame through
+/// MeshUpdate::planes). Point and directional lights; no shadow maps (the march itself is the
+/// light transport). Lengths mm, coefficients mm^-1.
+struct RayMarchSettings {
+  // The material.
+  /// 4N + 1 layers, top first, for N subsurface maps (layer i ends at boundary i; the last is unbounded).
+  std::vector<RayMarchLayer> layers;
+  /// N = 1 or 2 RGBA maps of boundary depths (4 per map, 0..1 of depthScaleMm), uploaded with
+  /// TextureEncoding::LinearData (values as stored, bilinear, no mip-maps, clamped).
+  std::vector<TextureHandle> subsurfaceMaps;
+  float depthScaleMm = 3.0f;     ///< mm, the depth a map value of 1 stands for
+  float uvPerMm = 1.0f / 80.0f;  ///< texture units per mm along T and B (subsurface::uvPerMmOf)
+  // The march (subsurface::MarchSettings).
+  int samples = 50;                    ///< fixed sample count along P..M_max, 1..256
+  float depthMaxMm = 3.0f;             ///< Depth_max of eq. 15, mm along N_S
+  float attenuationThreshold = 1e-3f;  ///< stop once exp(-tau_PM) falls below it, unitless (0: never)
+  float minCosView = 0.1f;             ///< lower clamp of N_S . omega_out in eq. 15 (grazing views)
+  bool jitter = true;                  ///< noisy sampling from a per-pixel hash (Norberg §3.1.2)
+  unsigned seed = 0;                   ///< frame seed of the hash
+  // Adaptive quality (subsurface::AdaptiveSettings): the count per pixel from view angle, layer
+  // depth and screen footprint.
+  bool adaptive = false;            ///< on: samples is ignored
+  int minSamples = 4;               ///< adaptive floor
+  int maxSamples = 100;             ///< adaptive ceiling
+  float depthResolutionMm = 0.06f;  ///< adaptive: wanted depth step, mm
+  float cutoff = 0.03f;             ///< adaptive: round-trip transmittance where the march stops, 0..1
+  float texelsPerStep = 1.5f;       ///< adaptive: wanted sideways step, texels or pixels
+  /// Unitless factor on the single-scattered radiance written to the HDR target (single
+  /// scattering alone is dim: it carries a few percent of the light).
+  float radianceScale = 8.0f;
+  /// Debug view: write samples marched / 100 as grey radiance (alpha 1) instead of the radiance.
+  bool showSamples = false;
+};
 /// Layered parallax mapping. Not in this build: branch `raymarch`.
 struct ParallaxSettings {};
 
@@ -78,6 +121,8 @@ inline constexpr int kMaxKernelTaps = 64;
 inline constexpr int kMaxKernelComponents = 8;
 /// The most transmittance rows of a separable material.
 inline constexpr int kMaxTransmittanceRows = 16;
+/// The most subsurface maps of a ray-marched material (4 boundaries each; 4N + 1 layers).
+inline constexpr int kMaxSubsurfaceMaps = 2;
 
 /// The method an object's settings select.
 inline ShadingMethod shadingMethod(const MethodSettings& settings) {

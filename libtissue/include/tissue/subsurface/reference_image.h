@@ -79,4 +79,11 @@ Image8 toDisplay(const RadianceImage& image, float exposure, Float3 background);
 /// `mask` is non-zero (all pixels if empty), in units of full scale (0..1).
 double displayRms(const Image8& a, const Image8& b, std::span<const std::uint8_t> mask = {});
 
+/// Relative root-mean-square difference of linear radiance `a` against `reference` (#pixels
+/// each, rows top to bottom, e.g. a GPU frame divided by its radiance scale) over the pixels
+/// where `mask` is non-zero (all if empty): sqrt(sum |a - r|^2 / sum |r|^2) over RGB. -1 when
+/// the sizes differ or the reference is black there.
+double relativeRadianceRms(std::span<const Float3> a, std::span<const Float3> reference,
+                           std::span<const std::uint8_t> mask = {});
+
 }  // namespace tissue::subsurface
