@@ -90,8 +90,7 @@ TEST_P(PipelineTest, MethodsNotInThisBuildAreErrorsNotFallbacks) {
   scene.objects = {object(*mesh)};
   ASSERT_TRUE(renderer->renderImage(scene, kSize, kSize));
   for (const render::MethodSettings& method : {render::MethodSettings{render::TextureSpaceSettings{}},
-                                               render::MethodSettings{render::RayMarchSettings{}},
-                                               render::MethodSettings{render::ParallaxSettings{}}}) {
+                                               render::MethodSettings{render::RayMarchSettings{}}}) {
     scene.objects[0].method = method;  // switched at run time, per object
     auto image = renderer->renderImage(scene, kSize, kSize);
     ASSERT_FALSE(image);

@@ -52,12 +52,6 @@ struct MeshHandle {
   explicit operator bool() const { return id != 0; }
 };
 
-/// A texture uploaded to a renderer (Renderer::createTexture); 0 = none (a default is used).
-struct TextureHandle {
-  std::uint32_t id = 0;
-  explicit operator bool() const { return id != 0; }
-};
-
 /// One object of the scene: mesh, textures, material and shading method.
 struct SceneObject {
   MeshHandle mesh;
