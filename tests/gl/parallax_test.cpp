@@ -70,14 +70,6 @@ render::ParallaxSettings oneLayer(render::TextureHandle base, float depthMm) {
   return s;
 }
 
-double meanRed(const render::FloatImage& image, int x0, int x1, int y0, int y1) {
-  double sum = 0.0;
-  for (int y = y0; y < y1; ++y)
-    for (int x = x0; x < x1; ++x)
-      sum += static_cast<double>(image.at(x, y).x);
-  return sum / ((x1 - x0) * (y1 - y0));
-}
-
 class ParallaxTest : public ::testing::TestWithParam<Backend> {};
 
 TEST_P(ParallaxTest, SphereMatchesGolden) {
@@ -179,7 +171,7 @@ TEST_P(ParallaxTest, LightmapBlurKeepsAUniformLevelAndSmoothsASpot) {
     EXPECT_TRUE(renderer->renderImage(withObject, kSize, kSize));
     auto radiance = renderer->readFrame(render::FrameView::Radiance);
     EXPECT_TRUE(radiance);
-    return meanRed(*radiance, x0, x1, kSize / 2 - 20, kSize / 2 + 20);
+    return meanRedOver(*radiance, x0, x1, kSize / 2 - 20, kSize / 2 + 20);
   };
   // Uniform irradiance (a directional light along -z): the blurred map has the same level.
   const double sharp = innerRed(0.0f, scene, 40, 216), blurred = innerRed(8.0f, scene, 40, 216);

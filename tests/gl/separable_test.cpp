@@ -70,14 +70,6 @@ Image8 halfWhite(int whiteColumns) {
   return image;
 }
 
-double meanOver(const render::FloatImage& image, int x0, int x1, int y0, int y1) {
-  double sum = 0.0;
-  for (int y = y0; y < y1; ++y)
-    for (int x = x0; x < x1; ++x)
-      sum += static_cast<double>(image.at(x, y).x);
-  return sum / ((x1 - x0) * (y1 - y0));
-}
-
 class SeparableTest : public ::testing::TestWithParam<Backend> {};
 
 TEST_P(SeparableTest, SphereMatchesGolden) {
@@ -117,7 +109,7 @@ TEST_P(SeparableTest, BlurKeepsTheMeanBrightnessOfAUniformlyLitPatch) {
   auto after = renderer->readFrame(render::FrameView::BlurredDiffuse);
   ASSERT_TRUE(before && after);
   // Whole stripe periods (3 per patch width) away from the image border.
-  const double a = meanOver(*before, 40, 216, 40, 216), b = meanOver(*after, 40, 216, 40, 216);
+  const double a = meanRedOver(*before, 40, 216, 40, 216), b = meanRedOver(*after, 40, 216, 40, 216);
   EXPECT_GT(a, 0.05);
   EXPECT_NEAR(b, a, 0.001 * a);
   // ... while the stripes themselves are blurred: a sinusoid of period P loses
@@ -165,7 +157,7 @@ TEST_P(SeparableTest, FollowSurfaceStopsBleedingAcrossADepthStep) {
     EXPECT_TRUE(renderer->renderImage(scene, kSize, kSize));
     auto blurred = renderer->readFrame(render::FrameView::BlurredDiffuse);
     EXPECT_TRUE(blurred);
-    return meanOver(*blurred, 131, 135, 120, 136);  // 3-7 px right of the step
+    return meanRedOver(*blurred, 131, 135, 120, 136);  // 3-7 px right of the step
   };
   const double without = darkSide(false), with = darkSide(true);
   EXPECT_GT(without, 0.02);  // the white side bleeds into the black one without eq. 4.12
