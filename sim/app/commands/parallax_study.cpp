@@ -292,9 +292,13 @@ int run(const StudyOptions& o, const GlobalOptions& global) {
   for (const auto& r : rows) {
     std::printf("%-11s %5.1f %4.1f", r["surface"].get<std::string>().c_str(), r["depth_mm"].get<double>(),
                 r["refractive_index"].get<double>());
-    for (const auto& c : r["angles"])
-      std::printf(" %6.3f (%3.0f%%)", c["mean_error_mm"].get<double>(),
-                  100.0 * c["miss_fraction"].get<double>());
+    for (const auto& c : r["angles"]) {  // "-": no ray reached the layer
+      const double miss = 100.0 * c["miss_fraction"].get<double>();
+      if (c["reached"].get<int>() == 0)
+        std::printf(" %6s (%3.0f%%)", "-", miss);
+      else
+        std::printf(" %6.3f (%3.0f%%)", c["mean_error_mm"].get<double>(), miss);
+    }
     std::printf("\n");
   }
   for (const auto& f : *images)
