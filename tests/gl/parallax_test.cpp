@@ -258,6 +258,38 @@ TEST_P(ParallaxTest, ObjectsOfDifferentMethodsShareAFrameUnchanged) {
   EXPECT_LT(worst, 1e-3);
 }
 
+TEST_P(ParallaxTest, InnerLayersCompositeByTheirOpacities) {
+  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  auto renderer = render::Renderer::create(context->procAddressFunction());
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  const SphereMesh sphere = makeSphere(40.0f, 32, 64);
+  auto mesh = renderer->createMesh(sphere.arrays());
+  auto vessels = renderer->createTexture(vesselTexture(128));
+  auto grey = renderer->createTexture(solid(90));
+  ASSERT_TRUE(mesh && vessels && grey);
+  render::Scene scene = goldenScene();
+  render::SceneObject o;
+  o.mesh = *mesh;
+  scene.objects = {o};
+  auto image = [&](std::vector<render::ParallaxLayer> layers) {
+    render::ParallaxSettings s;
+    s.opacity = 0.2f;
+    s.layers = std::move(layers);
+    scene.objects[0].method = s;
+    auto r = renderer->renderImage(scene, 128, 128);
+    EXPECT_TRUE(r) << (r ? "" : r.error().message);
+    return r ? *r : Image8{};
+  };
+  const Image8 shallow = image({{*vessels, 1.0f, 1.0f}}), deep = image({{*grey, 3.0f, 1.0f}});
+  // A transparent shallow layer shows the deep one; an opaque one hides it; the deepest layer is
+  // always opaque.
+  EXPECT_EQ(compareImages(image({{*vessels, 1.0f, 0.0f}, {*grey, 3.0f, 1.0f}}), deep, 0).maxDiff, 0);
+  EXPECT_EQ(compareImages(image({{*vessels, 1.0f, 1.0f}, {*grey, 3.0f, 0.0f}}), shallow, 0).maxDiff, 0);
+  const Image8 half = image({{*vessels, 1.0f, 0.5f}, {*grey, 3.0f, 1.0f}});
+  EXPECT_GT(meanDifference(half, shallow), 0.2);
+  EXPECT_GT(meanDifference(half, deep), 0.2);
+}
+
 TEST_P(ParallaxTest, BadSettingsAreOneClearError) {
   TISSUE_CONTEXT_OR_SKIP(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
