@@ -34,9 +34,13 @@ vec2 innerSize(int i) {
 }
 
 // The blurred lightmap's irradiance (linear RGB) at uv, renormalised by its visible fraction.
-vec3 lightmapIrradiance(vec2 uv) {
+// Where the offset leaves the chart (gutter: nothing drawn) or lands on a culled texel, the
+// irradiance at the shading point's own texel stands in, else `fallback`.
+vec3 lightmapIrradiance(vec2 uv, vec3 fallback) {
   vec4 e = texture(u_lightmap, uv);
-  return e.a > 1e-3 ? e.rgb / e.a : vec3(0.0);
+  if (e.a > 1e-3) return e.rgb / e.a;
+  e = texture(u_lightmap, v_uv);
+  return e.a > 1e-3 ? e.rgb / e.a : fallback;
 }
 
 void main() {
@@ -71,6 +75,17 @@ void main() {
   float mmPerUv = 0.5 * (sqrt(a) + sqrt(c));
   float uvPerPixel = max(length(duvdx), length(duvdy));
 
+  // The outer layer, lit directly; specular from every light through the normal map.
+  vec3 albedo = surfaceAlbedo();
+  vec3 outerIrradiance = u_ambient;
+  vec3 specular = vec3(0.0);
+  for (int i = 0; i < u_lightCount; ++i) {
+    vec3 L = lightDirection(i, P);
+    float shadow = shadowFactor(i, P, Ng);
+    outerIrradiance += u_lightRadiance[i] * max(dot(N, L), 0.0) * shadow;
+    specular += blinnPhongSpecular(N, L, V, u_specular, u_shininess) * u_lightRadiance[i] * shadow;
+  }
+
   // Inner layers, deepest first, composited front over back by their opacities.
   vec3 inner = vec3(0.0);
   for (int i = u_layerCount - 1; i >= 0; --i) {
@@ -86,21 +101,11 @@ void main() {
     float texelsBlur = u_innerBlurPerMm * s / max(mmPerUv, 1e-6) * size.x;
     float texelsScreen = uvPerPixel * size.x;
     float lod = log2(max(max(texelsBlur, texelsScreen), 1.0));
-    vec3 layer = innerBase(i, uv, lod) * lightmapIrradiance(uv);
+    vec3 layer = innerBase(i, uv, lod) * lightmapIrradiance(uv, outerIrradiance);
     float alpha = i == u_layerCount - 1 ? 1.0 : clamp(u_layerOpacity[i], 0.0, 1.0);
     inner = mix(inner, layer, alpha);
   }
 
-  // The outer layer, lit directly; specular from every light through the normal map.
-  vec3 albedo = surfaceAlbedo();
-  vec3 outerIrradiance = u_ambient;
-  vec3 specular = vec3(0.0);
-  for (int i = 0; i < u_lightCount; ++i) {
-    vec3 L = lightDirection(i, P);
-    float shadow = shadowFactor(i, P, Ng);
-    outerIrradiance += u_lightRadiance[i] * max(dot(N, L), 0.0) * shadow;
-    specular += blinnPhongSpecular(N, L, V, u_specular, u_shininess) * u_lightRadiance[i] * shadow;
-  }
   float opacity = u_hasOpacityMap == 1 ? texture(u_opacityMap, v_uv).r : u_opacity;
   // Eq. 19 and §2.2.3: s = see-through x N.V (saturate), x (1 - s) + y s.
   float see = (1.0 - clamp(opacity, 0.0, 1.0)) * clamp(dot(N, V), 0.0, 1.0);
