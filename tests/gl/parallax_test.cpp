@@ -239,23 +239,30 @@ TEST_P(ParallaxTest, ObjectsOfDifferentMethodsShareAFrameUnchanged) {
     EXPECT_TRUE(r);
     return *r;
   };
-  const render::FloatImage both = render({litObject, parallaxObject});
-  const render::FloatImage litOnly = render({litObject});
-  const render::FloatImage parallaxOnly = render({parallaxObject});
-  // Each object's pixels are what it gives alone (the lightmap's frustum culling aside, nothing
-  // of one method reaches the other's pixels).
-  double worst = 0.0;
-  int covered[2] = {0, 0};
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
-      const auto& alone = x < kSize / 2 ? litOnly.at(x, y) : parallaxOnly.at(x, y);
-      if (alone.w <= 0.0f) continue;
-      ++covered[x < kSize / 2 ? 0 : 1];
-      worst = std::max(worst, static_cast<double>(std::abs(both.at(x, y).x - alone.x)));
-    }
-  EXPECT_GT(covered[0], 2000);
-  EXPECT_GT(covered[1], 2000);
-  EXPECT_LT(worst, 1e-3);
+  // Each object's pixels are what it gives alone: nothing of one method reaches the other's
+  // pixels. Returns the largest red difference; `covered` counts the pixels of each half.
+  auto worstAgainstAlone = [&](const render::SceneObject& l, const render::SceneObject& r) {
+    const render::FloatImage both = render({l, r}), leftOnly = render({l}), rightOnly = render({r});
+    double worst = 0.0;
+    int covered[2] = {0, 0};
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        const auto& alone = x < kSize / 2 ? leftOnly.at(x, y) : rightOnly.at(x, y);
+        if (alone.w <= 0.0f) continue;
+        ++covered[x < kSize / 2 ? 0 : 1];
+        worst = std::max(worst, static_cast<double>(std::abs(both.at(x, y).x - alone.x)));
+      }
+    EXPECT_GT(covered[0], 2000);
+    EXPECT_GT(covered[1], 2000);
+    return worst;
+  };
+  EXPECT_LT(worstAgainstAlone(litObject, parallaxObject), 1e-3);
+  // Two parallax objects with lightmaps of different sizes: each keeps its own.
+  render::SceneObject second = parallaxObject;
+  second.mesh = *a;
+  std::get<render::ParallaxSettings>(second.method).lightmap.size = 256;
+  std::get<render::ParallaxSettings>(second.method).lightmap.reduction = 2;
+  EXPECT_LT(worstAgainstAlone(second, parallaxObject), 1e-3);
 }
 
 TEST_P(ParallaxTest, InnerLayersCompositeByTheirOpacities) {

@@ -97,8 +97,10 @@ Result<ParallaxMethod> ParallaxMethod::create(const gl::GlApi& gl, const gl::Sha
   return m;
 }
 
-Result<void> ParallaxMethod::ensureLightmap(const gl::GlApi& g, const ParallaxLightmapSettings& s) const {
-  if (m_lightmap && m_lightmap->size == s.size && m_lightmap->reduction == s.reduction) return {};
+Result<ParallaxMethod::Lightmap*> ParallaxMethod::ensureLightmap(const gl::GlApi& g,
+                                                                 const ParallaxLightmapSettings& s) const {
+  const std::pair key{s.size, s.reduction};
+  if (const auto found = m_lightmaps.find(key); found != m_lightmaps.end()) return found->second.get();
   auto l = std::make_unique<Lightmap>();
   auto irradiance = IrradianceMap::create(g, m_library, s.size);
   if (!irradiance) return Error{"renderer: parallax lightmap: " + irradiance.error().message};
@@ -115,14 +117,12 @@ Result<void> ParallaxMethod::ensureLightmap(const gl::GlApi& g, const ParallaxLi
   }
   l->size = s.size;
   l->reduction = s.reduction;
-  m_lightmap = std::move(l);
-  return {};
+  return m_lightmaps.emplace(key, std::move(l)).first->second.get();
 }
 
-Result<int> ParallaxMethod::lightmap(const FrameContext& frame, const ObjectDraw& object) const {
+Result<int> ParallaxMethod::lightmap(const FrameContext& frame, const ObjectDraw& object, Lightmap& l) const {
   const gl::GlApi& g = frame.gl;
   const auto& s = std::get<ParallaxSettings>(object.object->method);
-  Lightmap& l = *m_lightmap;
   const int reduced = s.lightmap.size / s.lightmap.reduction;
   // parallax:lightmap — per light: irradiance in UV space (culled, clipped), then box-filtered
   // into maps[0]; the first light overwrites (rgb and a), later ones add rgb.
@@ -238,10 +238,11 @@ Result<void> ParallaxMethod::draw(const FrameContext& frame, std::span<const Obj
   }
   for (const ObjectDraw& d : objects) {
     const auto& s = std::get<ParallaxSettings>(d.object->method);
-    if (auto r = ensureLightmap(frame.gl, s.lightmap); !r) return r;
-    auto current = lightmap(frame, d);
+    auto l = ensureLightmap(frame.gl, s.lightmap);
+    if (!l) return l.error();
+    auto current = lightmap(frame, d, **l);
     if (!current) return current.error();
-    if (auto r = geometry(frame, d, m_lightmap->maps[*current].id()); !r) return r;
+    if (auto r = geometry(frame, d, (*l)->maps[*current].id()); !r) return r;
   }
   return {};
 }

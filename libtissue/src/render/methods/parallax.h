@@ -7,8 +7,10 @@
 //   parallax:geometry       outer layer + inner layers at the eq. 15-18 offset, lit by the
 //                           blurred lightmap, eq. 19 blend, into the radiance target
 //                           (geometry.frag).
-// The lightmap is one set of textures reused by every parallax object in turn.
+// The lightmap is one set of textures per (size, reduction), reused by the parallax objects in turn.
+#include <map>
 #include <memory>
+#include <utility>
 
 #include "frame_context.h"
 #include "irradiance_map.h"
@@ -22,24 +24,24 @@ class ParallaxMethod {
   Result<void> draw(const FrameContext& frame, std::span<const ObjectDraw> objects) const;
 
  private:
-  // The lightmap's GL objects, created on the first parallax frame (and again when the
-  // settings' sizes change) so that renderers without parallax objects do not hold them.
+  // The lightmap's GL objects, created on the first parallax frame that needs their sizes, so
+  // that renderers without parallax objects do not hold them; one per (size, reduction) in use.
   struct Lightmap {
     IrradianceMap irradiance;
     gl::Texture maps[2];  // ping-pong, reduced resolution, premultiplied by the visible fraction
     gl::Framebuffer framebuffers[2];
     int size = 0, reduction = 0;
   };
-  Result<void> ensureLightmap(const gl::GlApi& gl, const ParallaxLightmapSettings& s) const;
-  /// Draws the lightmap and blurs it; returns which of `maps` holds the result.
-  Result<int> lightmap(const FrameContext& frame, const ObjectDraw& object) const;
+  Result<Lightmap*> ensureLightmap(const gl::GlApi& gl, const ParallaxLightmapSettings& s) const;
+  /// Draws the lightmap and blurs it; returns which of `l.maps` holds the result.
+  Result<int> lightmap(const FrameContext& frame, const ObjectDraw& object, Lightmap& l) const;
   Result<void> geometry(const FrameContext& frame, const ObjectDraw& object, GLuint lightmapTexture) const;
 
   gl::ShaderLibrary m_library;
   SurfacePrograms m_geometry;
   gl::Program m_gather, m_blur;
-  std::vector<Float2> m_disc;                    // unit Poisson disc
-  mutable std::unique_ptr<Lightmap> m_lightmap;  // a cache of GL objects (see above)
+  std::vector<Float2> m_disc;                                                    // unit Poisson disc
+  mutable std::map<std::pair<int, int>, std::unique_ptr<Lightmap>> m_lightmaps;  // a cache (see above)
 };
 
 }  // namespace tissue::render
