@@ -117,6 +117,12 @@ double meanRedOver(const render::FloatImage& image, int x0, int x1, int y0, int 
   return sum / ((x1 - x0) * (y1 - y0));
 }
 
+GoldenSphere uploadGoldenSphere(render::Renderer& renderer) {
+  const SphereMesh sphere = makeSphere(40.0f, 48, 96);
+  return {renderer.createMesh(sphere.arrays()), renderer.createTexture(makeBaseColor(256)),
+          renderer.createTexture(makeBumpyNormalMap(256))};
+}
+
 render::Scene goldenScene() {
   render::Scene scene;
   scene.camera.eye = {0.0f, 25.0f, 130.0f};
