@@ -34,15 +34,12 @@ TEST_P(SeparableTest, SphereMatchesGolden) {
   TISSUE_CONTEXT_OR_SKIP(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
-  const SphereMesh sphere = makeSphere(40.0f, 48, 96);
-  auto mesh = renderer->createMesh(sphere.arrays());
-  auto base = renderer->createTexture(makeBaseColor(256));
-  auto normal = renderer->createTexture(makeBumpyNormalMap(256));
-  ASSERT_TRUE(mesh && base && normal);
+  const GoldenSphere golden = uploadGoldenSphere(*renderer);
+  ASSERT_TRUE(golden);
   render::Scene scene = goldenScene();
-  render::SceneObject object = separableObject(*mesh, gaussianKernel(2.0f, 17));
-  object.baseColor = *base;
-  object.normalMap = *normal;
+  render::SceneObject object = separableObject(*golden.mesh, gaussianKernel(2.0f, 17));
+  object.baseColor = *golden.baseColor;
+  object.normalMap = *golden.normalMap;
   object.material = scene.material;
   scene.objects = {object};
   auto image = renderer->renderImage(scene, kSize, kSize);
@@ -62,7 +59,7 @@ TEST_P(SeparableTest, BlurKeepsTheMeanBrightnessOfAUniformlyLitPatch) {
   auto after = renderer->readFrame(render::FrameView::BlurredDiffuse);
   ASSERT_TRUE(before && after);
   // Whole stripe periods (3 per patch width) away from the image border.
-  const double a = meanOver(*before, 40, 216, 40, 216), b = meanOver(*after, 40, 216, 40, 216);
+  const double a = meanRedOver(*before, 40, 216, 40, 216), b = meanRedOver(*after, 40, 216, 40, 216);
   EXPECT_GT(a, 0.05);
   EXPECT_NEAR(b, a, 0.001 * a);
   // ... while the stripes themselves are blurred: a sinusoid of period P loses
@@ -110,7 +107,7 @@ TEST_P(SeparableTest, FollowSurfaceStopsBleedingAcrossADepthStep) {
     EXPECT_TRUE(renderer->renderImage(scene, kSize, kSize));
     auto blurred = renderer->readFrame(render::FrameView::BlurredDiffuse);
     EXPECT_TRUE(blurred);
-    return meanOver(*blurred, 131, 135, 120, 136);  // 3-7 px right of the step
+    return meanRedOver(*blurred, 131, 135, 120, 136);  // 3-7 px right of the step
   };
   const double without = darkSide(false), with = darkSide(true);
   EXPECT_GT(without, 0.02);  // the white side bleeds into the black one without eq. 4.12

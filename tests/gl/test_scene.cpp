@@ -109,6 +109,20 @@ Image8 makeBaseColor(int size) {
   return image;
 }
 
+double meanRedOver(const render::FloatImage& image, int x0, int x1, int y0, int y1) {
+  double sum = 0.0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x)
+      sum += static_cast<double>(image.at(x, y).x);
+  return sum / ((x1 - x0) * (y1 - y0));
+}
+
+GoldenSphere uploadGoldenSphere(render::Renderer& renderer) {
+  const SphereMesh sphere = makeSphere(40.0f, 48, 96);
+  return {renderer.createMesh(sphere.arrays()), renderer.createTexture(makeBaseColor(256)),
+          renderer.createTexture(makeBumpyNormalMap(256))};
+}
+
 render::Scene goldenScene() {
   render::Scene scene;
   scene.camera.eye = {0.0f, 25.0f, 130.0f};

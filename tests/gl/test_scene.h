@@ -32,6 +32,18 @@ Image8 makeFlatNormalMap(int size);
 /// A base colour with a gentle stripe pattern (sRGB).
 Image8 makeBaseColor(int size);
 
+/// Mean of the red channel of `image` over columns [x0, x1) and rows [y0, y1).
+double meanRedOver(const render::FloatImage& image, int x0, int x1, int y0, int y1);
+
+/// The golden images' sphere (radius 40 mm) with the stripe base colour and the bumpy normal map,
+/// uploaded to `renderer`; false members where an upload failed.
+struct GoldenSphere {
+  Result<render::MeshHandle> mesh;
+  Result<render::TextureHandle> baseColor, normalMap;
+  explicit operator bool() const { return mesh && baseColor && normalMap; }
+};
+GoldenSphere uploadGoldenSphere(render::Renderer& renderer);
+
 /// The scene the golden images are rendered with (256 x 256).
 render::Scene goldenScene();
 

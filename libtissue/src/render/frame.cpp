@@ -23,6 +23,17 @@ struct ResolvedObjects {
   int count = 0;
 };
 
+// The textures a method's settings name, in the order of ObjectDraw::methodTextures.
+std::array<TextureHandle, kMaxMethodTextures> methodTextureHandles(const MethodSettings& method) {
+  std::array<TextureHandle, kMaxMethodTextures> out{};
+  if (const auto* p = std::get_if<ParallaxSettings>(&method)) {  // opacity map, inner layers
+    out[0] = p->opacityMap;
+    for (std::size_t i = 0; i < p->layers.size() && i + 1 < out.size(); ++i)
+      out[i + 1] = p->layers[i].base;
+  }
+  return out;
+}
+
 Result<ResolvedObjects> resolveObjects(std::span<const SceneObject> objects,
                                        const std::map<std::uint32_t, MeshBuffers>& meshes,
                                        const std::map<std::uint32_t, gl::Texture>& textures,
@@ -52,6 +63,17 @@ Result<ResolvedObjects> resolveObjects(std::span<const SceneObject> objects,
                      std::to_string(handle.id) + ", which this renderer does not hold"};
       }
       *name = t->second.id();
+    }
+    const auto methodHandles = methodTextureHandles(o.method);
+    for (std::size_t k = 0; k < methodHandles.size(); ++k) {
+      if (!methodHandles[k]) continue;
+      const auto t = textures.find(methodHandles[k].id);
+      if (t == textures.end()) {
+        return Error{"renderer: scene object " + std::to_string(i) + "'s " +
+                     std::string(shadingMethodName(shadingMethod(o.method))) + " settings name texture " +
+                     std::to_string(methodHandles[k].id) + ", which this renderer does not hold"};
+      }
+      d.methodTextures[k] = t->second.id();
     }
     out.byMethod[o.method.index()].push_back(d);
     out.meshes.push_back(&mesh->second);

@@ -1,11 +1,11 @@
-// tissue-sim render [--mesh FILE] --out IMAGE.png [--method lit|separable [--kernel MODEL] [--taps N]
-// [--rank R]]:
-// one image of a mesh, lit or with screen-space separable SSS.
+// tissue-sim render [--mesh FILE] --out IMAGE.png [--method lit|separable|texture-space|raymarch|parallax
+// ...] [--kernel MODEL] [--taps N] [--rank R]: one image of a mesh with one shading method.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
 
+#include "../parallax_scene.h"
 #include "../pass_timings_json.h"
 #include "command.h"
 #include "output.h"
@@ -38,9 +38,10 @@ struct RenderOptions {
   std::string baseColor;
   float scale = 1.0f;  // mm per file unit
   int samples = 4;
-  TsdRenderOptions tsd;   // --method texture-space
-  int marchSamples = 50;  // raymarch: samples per pixel
-  bool adaptive = false;  // raymarch: per-pixel sample count
+  TsdRenderOptions tsd;      // --method texture-space
+  int marchSamples = 50;     // raymarch: samples per pixel
+  bool adaptive = false;     // raymarch: per-pixel sample count
+  ParallaxOptions parallax;  // --method parallax
 };
 
 Float3 sub(Float3 a, Float3 b) {
@@ -78,6 +79,46 @@ Result<Image8> readTexture(const std::string& path, const char* what) {
   return image;
 }
 
+// --method parallax: the layered-parallax method on the mesh's own UVs (else an atlas).
+int renderParallax(const RenderOptions& o, const GlobalOptions& global) {
+  const char* cmd = "render";
+  auto loaded = loadParallaxScene(o.mesh, o.scale, float(o.width) / float(o.height), o.samples, o.parallax);
+  if (!loaded) return fail(cmd, loaded.error().message);
+  ParallaxScene& p = *loaded;
+  p.scene.lights = {keyLight(p.scene.camera)};
+  p.scene.lights[0].castsShadows = true;
+  auto first = p.renderer->renderImage(p.scene, o.width, o.height);  // allocations, shader caches
+  if (!first) return fail(cmd, first.error().message);
+  const double firstMs = p.renderer->lastTimings().totalCpuMs;
+  auto image = p.renderer->renderImage(p.scene, o.width, o.height);
+  if (!image) return fail(cmd, image.error().message);
+  const render::RenderTimings t = p.renderer->lastTimings();
+  if (auto w = writePng(o.out, *image); !w) return fail(cmd, w.error().message);
+  const auto& s = std::get<render::ParallaxSettings>(p.scene.objects[0].method);
+  nlohmann::json out;
+  out["out"] = o.out;
+  out["method"] = "parallax";
+  out["width"] = o.width;
+  out["height"] = o.height;
+  out["gl_renderer"] = p.context->info().renderer;
+  out["render_ms"] = t.totalCpuMs;
+  out["first_frame_ms"] = firstMs;
+  out["passes"] = passTimingsJson(t);
+  out["layer_depth_mm"] = s.layers[0].depthMm;
+  out["refractive_index"] = s.refractiveIndex;
+  out["lightmap_size"] = s.lightmap.size;
+  out["lightmap_reduction"] = s.lightmap.reduction;
+  out["blur_radius_mm"] = s.lightmap.blurRadiusMm;
+  out["blur_passes"] = s.lightmap.blurPasses;
+  out["cull"] = s.lightmap.cull;
+  out["clip"] = s.lightmap.clip;
+  out["uvs"] =
+      p.organ.atlas ? "automatic atlas (" + std::to_string(p.organ.charts) + " charts)" : "the mesh's own";
+  out["textures"] = p.textured ? "data/textures/<mesh>/ (inner layer: inner_base.png)" : "defaults";
+  printResult(global, out);
+  return 0;
+}
+
 int run(RenderOptions o, const GlobalOptions& global) {
   const char* cmd = "render";
   // A mesh of the project's own data gets its own textures unless others are given.
@@ -87,10 +128,7 @@ int run(RenderOptions o, const GlobalOptions& global) {
   if (o.width <= 0 || o.height <= 0) return fail(cmd, "--width and --height must be positive pixels");
   if (o.method == "raymarch")
     return runRayMarchRender(o.mesh, o.out, o.width, o.height, o.marchSamples, o.adaptive, global);
-  if (o.method == "parallax")
-    return fail(cmd,
-                "--method parallax is not implemented yet (issue 6, layered parallax); use lit, "
-                "separable, texture-space or raymarch");
+  if (o.method == "parallax") return renderParallax(o, global);
   if (o.method == "texture-space") {
     o.tsd.mesh = o.mesh, o.tsd.out = o.out, o.tsd.baseColor = o.baseColor;
     o.tsd.width = o.width, o.tsd.height = o.height, o.tsd.scale = o.scale;
@@ -197,10 +235,10 @@ int run(RenderOptions o, const GlobalOptions& global) {
 
 void registerRenderCommand(CLI::App& app, const GlobalOptions& global, int& exitCode) {
   auto opts = std::make_shared<RenderOptions>();
-  auto* cmd = app.add_subcommand("render", "render a mesh lit or with separable SSS to a PNG");
+  auto* cmd = app.add_subcommand("render", "render a mesh with one shading method to a PNG");
   cmd->add_option("--mesh", opts->mesh, "mesh file (OBJ, PLY, OFF, STL; default data/meshes/liver.obj)");
   cmd->add_option("--method", opts->method,
-                  "shading method: lit, separable (screen-space SSS), texture-space or raymarch");
+                  "shading method: lit, separable (screen-space SSS), texture-space, raymarch or parallax");
   cmd->add_option("--kernel", opts->kernel,
                   "separable kernel model: svd, preintegrated, guided, manual, deon, jimenez");
   cmd->add_option("--taps", opts->taps, "separable kernel taps per 1D pass (odd, default 17)");
@@ -220,12 +258,26 @@ void registerRenderCommand(CLI::App& app, const GlobalOptions& global, int& exit
   cmd->add_option("--map-size", opts->tsd.mapSize,
                   "texture-space: T_max, irradiance map texels (default 1024)");
   cmd->add_flag(
-      "--no-cull", [opts](std::int64_t) { opts->tsd.cull = false; }, "texture-space: no culled map");
+      "--no-cull", [opts](std::int64_t) { opts->tsd.cull = opts->parallax.settings.lightmap.cull = false; },
+      "texture-space and parallax: no culled map");
   cmd->add_flag(
-      "--no-clip", [opts](std::int64_t) { opts->tsd.clip = false; }, "texture-space: no clipped map");
+      "--no-clip", [opts](std::int64_t) { opts->tsd.clip = opts->parallax.settings.lightmap.clip = false; },
+      "texture-space and parallax: no clipped map");
   cmd->add_flag(
       "--no-depth-size", [opts](std::int64_t) { opts->tsd.depthSize = false; },
       "texture-space: no depth-based map size");
+  cmd->add_option("--layer-depth", opts->parallax.layerDepthMm,
+                  "parallax: inner layer depth, mm (default 1.5)");
+  cmd->add_option("--refractive-index", opts->parallax.settings.refractiveIndex,
+                  "parallax: relative refractive index n_inside / n_outside (default 1.4; 1 = Oat 2006)");
+  cmd->add_option("--blur-radius", opts->parallax.settings.lightmap.blurRadiusMm,
+                  "parallax: lightmap Poisson-disc radius of all passes, mm (default 4)");
+  cmd->add_option("--blur-passes", opts->parallax.settings.lightmap.blurPasses,
+                  "parallax: lightmap blur passes (default 3)");
+  cmd->add_option("--lightmap-size", opts->parallax.settings.lightmap.size,
+                  "parallax: irradiance pass texels a side (default 1024)");
+  cmd->add_option("--lightmap-reduction", opts->parallax.settings.lightmap.reduction,
+                  "parallax: the blurred lightmap is size / reduction texels (1, 2, 4, 8; default 4)");
   cmd->add_option("--march-samples", opts->marchSamples, "raymarch: samples per pixel (default 50)");
   cmd->add_flag("--adaptive", opts->adaptive, "raymarch: choose the sample count per pixel");
   cmd->callback([opts, &global, &exitCode] { exitCode = run(*opts, global); });

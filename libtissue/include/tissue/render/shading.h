@@ -4,6 +4,7 @@
 /// settings. An object's method is the variant's alternative; `shadingMethod()` names it, and
 /// the pipeline switches on it once per object. Lengths are mm.
 
+#include <cstdint>
 #include <string_view>
 #include <utility>
 #include <variant>
@@ -108,8 +109,55 @@ struct RayMarchSettings {
   /// Debug view: write samples marched / 100 as grey radiance (alpha 1) instead of the radiance.
   bool showSamples = false;
 };
-/// Layered parallax mapping. Not in this build: branch `raymarch`.
-struct ParallaxSettings {};
+/// One inner layer of the layered-parallax method (Oat 2006; Norberg 2010 §2.2).
+struct ParallaxLayer {
+  /// sRGB base colour of the layer (e.g. a vessel network); none: the object's default base.
+  TextureHandle base;
+  float depthMm = 1.0f;  ///< mm below the outer surface along -N (d of Norberg eq. 17)
+  /// Unitless 0..1 opacity of this layer over the deeper ones (Norberg §2.2: intermediate layers
+  /// may be partly transparent); the deepest layer is always opaque.
+  float opacity = 1.0f;
+};
+
+/// The most inner layers of a parallax object.
+inline constexpr int kMaxParallaxLayers = 3;
+
+/// The lightmap of the layered-parallax method: the texture-space irradiance pass (d'Eon et al.
+/// 2007 with the culled §3 and clipped §5 maps of Jimenez and Gutierrez 2008), box-filtered to a
+/// reduced resolution and blurred by a Poisson disc in several passes (Norberg §2.2.2, §3.2).
+struct ParallaxLightmapSettings {
+  int size = 1024;            ///< texels of the irradiance pass (T_max), 16..2048
+  bool cull = true;           ///< Jimenez §3: no irradiance where the surface faces away (> 105 deg)
+  bool clip = true;           ///< Jimenez §5: only what lies inside the view frustum
+  int reduction = 4;          ///< the blurred map has size / reduction texels a side (1, 2, 4 or 8)
+  float blurRadiusMm = 4.0f;  ///< mm on the surface: the total Poisson-disc radius of all passes
+  int blurPasses = 3;         ///< passes; each uses radius blurRadiusMm / sqrt(passes) (§3.2)
+};
+
+/// Layered parallax multi-texturing (Oat 2006, as in Norberg 2010 §2.2 and §3.2). The outer layer
+/// is the object's baseColor and normalMap with an opacity; the inner layers are looked up at the
+/// texture coordinate the transmission vector reaches at their depth (eq. 15-18), lit by the
+/// blurred texture-space lightmap and blurred by the transmission distance; the outer and inner
+/// colours are blended by opacity x N.V (eq. 19). Meshes need unique UVs (the lightmap is drawn
+/// in UV space).
+struct ParallaxSettings {
+  /// Outer-layer opacity map (unitless 0..1 in the red channel: 1 hides the inner layers, as
+  /// data/textures/<mesh>/opacity.png); none: the constant `opacity`.
+  TextureHandle opacityMap;
+  float opacity = 0.5f;  ///< unitless 0..1, the outer layer's opacity without an opacity map
+  /// 1..kMaxParallaxLayers inner layers, shallowest first, with increasing depths.
+  std::vector<ParallaxLayer> layers{ParallaxLayer{}};
+  /// Relative refractive index n_inside / n_outside of the outer layer (unitless, >= 1). 1 gives
+  /// Oat's transmission vector (eq. 15-16); above 1 the vector is refracted by Snell's law.
+  float refractiveIndex = 1.4f;
+  /// mm of inner-layer blur (Poisson-disc radius) per mm the view ray travels to the layer
+  /// (Norberg §2.2.2: "the blurring of the base texture depends on the transmission distance").
+  float innerBlurPerMm = 0.15f;
+  /// mm: the transmission distance (s of eq. 17) is clamped here, so grazing views (where
+  /// |T_z| -> 0) cannot shift the lookup arbitrarily far.
+  float maxTransmissionMm = 20.0f;
+  ParallaxLightmapSettings lightmap;
+};
 
 /// Per-object settings; the alternative chosen is the object's shading method.
 using MethodSettings =

@@ -3,6 +3,7 @@
 // frame's targets, the pass timers, and its own objects with their GPU resources. Each method
 // (one file here, shaders in shaders/<method>/) draws its objects into the geometry targets
 // in its geometry pass and may add post passes; see docs/ARCHITECTURE.md, "Adding a method".
+#include <array>
 #include <span>
 #include <vector>
 
@@ -21,6 +22,9 @@ namespace tissue::render {
 /// Texture units every surface shader uses.
 enum TextureUnit : int { kUnitBaseColor = 0, kUnitNormalMap = 1, kUnitShadowMaps = 2, kUnitMethod0 = 3 };
 
+/// The most textures a method's settings may name (parallax: opacity map and inner layers).
+inline constexpr std::size_t kMaxMethodTextures = 4;
+
 /// One object to draw, resolved to GPU names.
 struct ObjectDraw {
   const SceneObject* object = nullptr;
@@ -28,6 +32,9 @@ struct ObjectDraw {
   GLuint baseColor = 0;  ///< a default when the object has none
   GLuint normalMap = 0;  ///< 0: no normal mapping
   float objectId = 0;    ///< 1.. within the frame: the material ID of the geometry targets
+  /// The textures the object's method settings name (methodTextureHandles in frame.cpp, same
+  /// order), resolved; 0 where a handle is empty.
+  std::array<GLuint, kMaxMethodTextures> methodTextures{};
 };
 
 /// The frame as the methods see it.

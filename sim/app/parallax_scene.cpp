@@ -1,0 +1,51 @@
+// The layered-parallax commands' shared setup: organ, renderer, textures, one parallax object.
+#include "parallax_scene.h"
+
+#include "output.h"
+#include "tissue/context/headless_context.h"
+#include "tissue/core/image.h"
+
+namespace tissue::sim_app {
+
+Result<ParallaxScene> loadParallaxScene(const std::filesystem::path& path, float scale, float aspect,
+                                        int samples, const ParallaxOptions& options) {
+  ParallaxScene out;
+  auto organ = loadTsdOrgan(path, scale);
+  if (!organ) return organ.error();
+  out.organ = std::move(*organ);
+  auto context = context::createHeadlessContext({}, {.backend = "", .log = false});
+  if (!context) return context.error();
+  out.context = std::move(*context);
+  auto renderer = render::Renderer::create(out.context->procAddressFunction(),
+                                           {.shaders = {}, .samples = samples, .gpuTimers = true});
+  if (!renderer) return renderer.error();
+  out.renderer = std::move(*renderer);
+  auto mesh = out.renderer->createMesh(out.organ.arrays());
+  if (!mesh) return mesh.error();
+  render::SceneObject object;
+  object.mesh = *mesh;
+  render::ParallaxSettings s = options.settings;
+  s.layers = {render::ParallaxLayer{{}, options.layerDepthMm, 1.0f}};
+  // The project's layer textures live in the mesh's own UV space: with an atlas they do not fit.
+  const std::string stem = path.stem().string();
+  out.textured = !out.organ.atlas && !findDataTexture(stem, "inner_base").empty();
+  if (out.textured) {
+    for (auto [name, handle] :
+         {std::pair{"base_color", &object.baseColor}, std::pair{"normal_map", &object.normalMap},
+          std::pair{"opacity", &s.opacityMap}, std::pair{"inner_base", &s.layers[0].base}}) {
+      const auto file = findDataTexture(stem, name);
+      if (file.empty()) continue;
+      auto image = readImage(file, 4);
+      if (!image) return Error{file.string() + ": " + image.error().message};
+      auto texture = out.renderer->createTexture(*image);
+      if (!texture) return texture.error();
+      *handle = *texture;
+    }
+  }
+  object.method = s;
+  out.scene.camera = render::frameBoundingBox(out.organ.lo, out.organ.hi, aspect);
+  out.scene.objects = {object};
+  return out;
+}
+
+}  // namespace tissue::sim_app
