@@ -1,7 +1,13 @@
 #include "state_guard.h"
 
+#include <array>
+
 namespace tissue::render {
 namespace {
+// The blend state saved in StateGuard::m_blendState, in its order.
+constexpr std::array<GLenum, 6> kBlendState = {GL_BLEND_SRC_RGB,      GL_BLEND_DST_RGB,
+                                               GL_BLEND_SRC_ALPHA,    GL_BLEND_DST_ALPHA,
+                                               GL_BLEND_EQUATION_RGB, GL_BLEND_EQUATION_ALPHA};
 void setEnabled(const gl::GlApi& gl, GLenum cap, GLboolean on) {
   if (on) {
     gl.Enable(cap);
@@ -43,12 +49,8 @@ StateGuard::StateGuard(const gl::GlApi& gl) : m_gl(gl) {
   m_depthTest = gl.IsEnabled(GL_DEPTH_TEST);
   m_cullFace = gl.IsEnabled(GL_CULL_FACE);
   m_blend = gl.IsEnabled(GL_BLEND);
-  gl.GetIntegerv(GL_BLEND_SRC_RGB, &m_blendSrcRgb);
-  gl.GetIntegerv(GL_BLEND_DST_RGB, &m_blendDstRgb);
-  gl.GetIntegerv(GL_BLEND_SRC_ALPHA, &m_blendSrcAlpha);
-  gl.GetIntegerv(GL_BLEND_DST_ALPHA, &m_blendDstAlpha);
-  gl.GetIntegerv(GL_BLEND_EQUATION_RGB, &m_blendEquationRgb);
-  gl.GetIntegerv(GL_BLEND_EQUATION_ALPHA, &m_blendEquationAlpha);
+  for (std::size_t i = 0; i < kBlendState.size(); ++i)
+    gl.GetIntegerv(kBlendState[i], &m_blendState[i]);
   m_scissorTest = gl.IsEnabled(GL_SCISSOR_TEST);
   m_srgb = gl.IsEnabled(GL_FRAMEBUFFER_SRGB);
   m_multisample = gl.IsEnabled(GL_MULTISAMPLE);
@@ -87,10 +89,9 @@ StateGuard::~StateGuard() {
   setEnabled(gl, GL_DEPTH_TEST, m_depthTest);
   setEnabled(gl, GL_CULL_FACE, m_cullFace);
   setEnabled(gl, GL_BLEND, m_blend);
-  gl.BlendFuncSeparate(static_cast<GLenum>(m_blendSrcRgb), static_cast<GLenum>(m_blendDstRgb),
-                       static_cast<GLenum>(m_blendSrcAlpha), static_cast<GLenum>(m_blendDstAlpha));
-  gl.BlendEquationSeparate(static_cast<GLenum>(m_blendEquationRgb),
-                           static_cast<GLenum>(m_blendEquationAlpha));
+  auto e = [&](std::size_t i) { return static_cast<GLenum>(m_blendState[i]); };
+  gl.BlendFuncSeparate(e(0), e(1), e(2), e(3));
+  gl.BlendEquationSeparate(e(4), e(5));
   setEnabled(gl, GL_SCISSOR_TEST, m_scissorTest);
   setEnabled(gl, GL_FRAMEBUFFER_SRGB, m_srgb);
   setEnabled(gl, GL_MULTISAMPLE, m_multisample);

@@ -21,8 +21,8 @@ class StateGuard {
   static constexpr int kUnits = 8;  // the renderer binds textures on units 0..kUnits-1
   GLint m_activeTexture = 0, m_texture2d[kUnits] = {}, m_texture2dArray[kUnits] = {},
         m_texture2dMultisample[kUnits] = {};
-  GLint m_blendSrcRgb = 0, m_blendDstRgb = 0, m_blendSrcAlpha = 0, m_blendDstAlpha = 0,
-        m_blendEquationRgb = 0, m_blendEquationAlpha = 0;
+  // GL_BLEND_SRC_RGB, _DST_RGB, _SRC_ALPHA, _DST_ALPHA, _EQUATION_RGB, _EQUATION_ALPHA
+  GLint m_blendState[6] = {};
   GLint m_depthFunc = 0, m_cullMode = 0, m_frontFace = 0;
   GLint m_packAlignment = 0, m_unpackAlignment = 0, m_unpackRowLength = 0, m_pixelUnpackBuffer = 0,
         m_pixelPackBuffer = 0;
