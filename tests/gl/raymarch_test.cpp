@@ -375,9 +375,7 @@ TEST_P(RayMarchTest, CoexistsWithLitAndSeparableObjectsInOneFrame) {
   render::SceneObject lit, separable;
   lit.mesh = *a;
   separable.mesh = *b;
-  render::SeparableSettings sss;
-  sss.kernel = {{1.0f, 1.0f, 1.0f, 0.0f}};
-  separable.method = sss;
+  separable.method = render::rankOneSeparable({{1.0f, 1.0f, 1.0f, 0.0f}});
   gpu->scene.objects.push_back(lit);
   gpu->scene.objects.push_back(separable);
   auto image = gpu->renderer.renderImage(gpu->scene, kWidth, kHeight);
