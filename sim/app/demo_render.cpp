@@ -141,6 +141,37 @@ nlohmann::json DemoRenderer::renderSeparable(const mesh::DeformableSurface& surf
   return j;
 }
 
+nlohmann::json DemoRenderer::renderParallax(const mesh::DeformableSurface& surface,
+                                            const LayeredMaterial& material, const std::filesystem::path& png) {
+  auto& s = *m_impl;
+  auto fail = [](const std::string& why) { return nlohmann::json{{"skipped", why}}; };
+  // Step 1: the organ as it is now (uploads the deformation), then its inner layer's textures.
+  if (auto lit = render(surface, material, png); !lit) return fail(lit.error().message);
+  render::ParallaxSettings settings;
+  settings.layers = {render::ParallaxLayer{{}, 1.5f, 1.0f}};
+  for (auto [name, handle] :
+       {std::pair{"opacity", &settings.opacityMap}, std::pair{"inner_base", &settings.layers[0].base}}) {
+    auto tex = loadTexture(material.name, name);
+    if (!tex) return fail(tex.error().message);
+    auto texture = s.renderer->createTexture(*tex);
+    if (!texture) return fail(texture.error().message);
+    *handle = *texture;
+  }
+  // Step 2: the same object switched to parallax for one frame, then back (the textures go).
+  s.scene.objects[0].method = settings;
+  auto image = s.renderer->renderImage(s.scene, s.width, s.height);
+  s.scene.objects[0].method = render::LitSettings{};
+  s.renderer->destroyTexture(settings.opacityMap);
+  s.renderer->destroyTexture(settings.layers[0].base);
+  if (!image) return fail(image.error().message);
+  if (auto w = writePng(png, *image); !w) return fail(w.error().message);
+  return {{"image", png.filename().string()},
+          {"layer_depth_mm", settings.layers[0].depthMm},
+          {"refractive_index", settings.refractiveIndex},
+          {"passes", passTimingsJson(s.renderer->lastTimings())},
+          {"total_cpu_ms", s.renderer->lastTimings().totalCpuMs}};
+}
+
 nlohmann::json DemoRenderer::info() const {
   nlohmann::json j;
   if (!m_impl->context) return j;

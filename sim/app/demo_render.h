@@ -29,6 +29,11 @@ class DemoRenderer {
   /// timings and the image RMS against the CPU reference; {"skipped": why} when it cannot.
   nlohmann::json renderSeparable(const mesh::DeformableSurface& surface, const LayeredMaterial& material,
                                  const std::filesystem::path& png);
+  /// Renders the surface as it is now with layered parallax (Oat 2006; Norberg §2.2): the
+  /// organ's base colour and normal map as the outer layer, its opacity map, and the vessel
+  /// network (inner_base.png) 1.5 mm below; writes `png` and reports the pass timings.
+  nlohmann::json renderParallax(const mesh::DeformableSurface& surface, const LayeredMaterial& material,
+                                const std::filesystem::path& png);
   /// GL context and renderer strings, and the last frame's timings (ms).
   nlohmann::json info() const;
 

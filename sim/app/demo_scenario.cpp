@@ -134,6 +134,28 @@ Result<DemoSetup> setUp(const DemoOptions& o) {
   return d;
 }
 
+/// The four shading methods side by side: the images in `files` (equal sizes) tiled two per row
+/// into `png`. Returns the file name, or why it was skipped.
+nlohmann::json writeMethodsMontage(const std::filesystem::path& dir, const std::vector<std::string>& files,
+                                   const std::string& png) {
+  std::vector<Image8> images;
+  for (const auto& f : files) {
+    auto image = readImage(dir / f, 4);
+    if (!image) return {{"skipped", f + ": " + image.error().message}};
+    if (!images.empty() && (image->width != images[0].width || image->height != images[0].height))
+      return {{"skipped", f + " has another size than " + files[0]}};
+    images.push_back(std::move(*image));
+  }
+  if (images.empty()) return {{"skipped", "no images"}};
+  const int w = images[0].width, h = images[0].height, rows = int(images.size() + 1) / 2;
+  Image8 tiled(2 * w, rows * h, 4);
+  for (std::size_t i = 0; i < images.size(); ++i)
+    for (int y = 0; y < h; ++y)
+      std::copy_n(images[i].at(0, y), std::size_t(w) * 4, tiled.at(int(i % 2) * w, int(i / 2) * h + y));
+  if (auto r = writePng(dir / png, tiled); !r) return {{"skipped", r.error().message}};
+  return {{"image", png}, {"panels", files}};
+}
+
 /// The render step (kept apart so that other shading methods can render the same frames).
 void renderFrame(DemoRenderer& renderer, DemoSetup& d, std::span<const Float3> positions,
                  const std::filesystem::path& png, std::vector<std::string>& images, nlohmann::json& report) {
