@@ -89,8 +89,7 @@ TEST_P(PipelineTest, MethodsNotInThisBuildAreErrorsNotFallbacks) {
   render::Scene scene = frontScene();
   scene.objects = {object(*mesh)};
   ASSERT_TRUE(renderer->renderImage(scene, kSize, kSize));
-  for (const render::MethodSettings& method : {render::MethodSettings{render::TextureSpaceSettings{}},
-                                               render::MethodSettings{render::RayMarchSettings{}},
+  for (const render::MethodSettings& method : {render::MethodSettings{render::RayMarchSettings{}},
                                                render::MethodSettings{render::ParallaxSettings{}}}) {
     scene.objects[0].method = method;  // switched at run time, per object
     auto image = renderer->renderImage(scene, kSize, kSize);

@@ -13,23 +13,6 @@ namespace {
 
 constexpr int kSize = 256;
 
-// A Gaussian kernel of standard deviation `sigmaMm` (all channels), `taps` evenly spaced over
-// +-3 sigma, weights normalised to 1: exact for a fronto-parallel plane up to sampling.
-render::SeparableSettings gaussianKernel(float sigmaMm, int taps) {
-  render::SeparableSettings s;
-  float sum = 0.0f;
-  for (int i = 0; i < taps; ++i) {
-    const float x =
-        taps == 1 ? 0.0f : (-3.0f + 6.0f * static_cast<float>(i) / static_cast<float>(taps - 1)) * sigmaMm;
-    const float w = taps == 1 ? 1.0f : std::exp(-x * x / (2.0f * sigmaMm * sigmaMm));
-    s.kernel.push_back({w, w, w, x});
-    sum += w;
-  }
-  for (Float4& k : s.kernel)
-    k = {k.x / sum, k.y / sum, k.z / sum, k.w};
-  return s;
-}
-
 // The 2D Gaussian the kernel separates, tabulated for the CPU reference.
 reference::RadialProfile gaussianProfile(float sigmaMm) {
   reference::RadialProfile p;
@@ -40,17 +23,6 @@ reference::RadialProfile gaussianProfile(float sigmaMm) {
     p.value.push_back({v, v, v});
   }
   return p;
-}
-
-// Camera on +z at 200 mm looking at the origin; a light straight above the patch.
-render::Scene frontScene() {
-  render::Scene scene;
-  scene.camera.eye = {0.0f, 0.0f, 200.0f};
-  scene.camera.nearMm = 50.0f;
-  scene.camera.farMm = 400.0f;
-  scene.lights[0].type = render::LightType::Directional;
-  scene.lights[0].direction = {0.0f, 0.0f, -1.0f};
-  return scene;
 }
 
 render::SceneObject separableObject(render::MeshHandle mesh, render::SeparableSettings settings) {
@@ -90,7 +62,7 @@ TEST_P(SeparableTest, SphereMatchesGolden) {
   auto normal = renderer->createTexture(makeBumpyNormalMap(256));
   ASSERT_TRUE(mesh && base && normal);
   render::Scene scene = goldenScene();
-  render::SceneObject object = separableObject(*mesh, gaussianKernel(2.0f, 17));
+  render::SceneObject object = separableObject(*mesh, separableGaussianKernel(2.0f, 17));
   object.baseColor = *base;
   object.normalMap = *normal;
   object.material = scene.material;
@@ -109,8 +81,8 @@ TEST_P(SeparableTest, BlurKeepsTheMeanBrightnessOfAUniformlyLitPatch) {
   auto mesh = renderer->createMesh(patch.arrays());
   auto stripes = renderer->createTexture(makeBaseColor(256));
   ASSERT_TRUE(mesh && stripes);
-  render::Scene scene = frontScene();
-  scene.objects = {separableObject(*mesh, gaussianKernel(3.0f, 25))};
+  render::Scene scene = frontLitScene();
+  scene.objects = {separableObject(*mesh, separableGaussianKernel(3.0f, 25))};
   scene.objects[0].baseColor = *stripes;
   ASSERT_TRUE(renderer->renderImage(scene, kSize, kSize));
   auto before = renderer->readFrame(render::FrameView::Diffuse);
@@ -156,8 +128,8 @@ TEST_P(SeparableTest, FollowSurfaceStopsBleedingAcrossADepthStep) {
   auto handle = renderer->createMesh(mesh.arrays());
   auto texture = renderer->createTexture(halfWhite(32));
   ASSERT_TRUE(handle && texture);
-  render::Scene scene = frontScene();
-  scene.objects = {separableObject(*handle, gaussianKernel(5.0f, 25))};
+  render::Scene scene = frontLitScene();
+  scene.objects = {separableObject(*handle, separableGaussianKernel(5.0f, 25))};
   scene.objects[0].baseColor = *texture;
   scene.objects[0].material.ambient = {};
   auto darkSide = [&](bool follow) {
@@ -187,9 +159,9 @@ TEST_P(SeparableTest, ObjectsBlurWithTheirOwnKernelsAndDoNotBleed) {
   auto white = renderer->createTexture(halfWhite(64));
   auto stripes = renderer->createTexture(makeBaseColor(256));
   ASSERT_TRUE(a && b && white && stripes);
-  render::Scene scene = frontScene();
-  scene.objects = {separableObject(*a, gaussianKernel(6.0f, 25)),
-                   separableObject(*b, gaussianKernel(1.0f, 1))};
+  render::Scene scene = frontLitScene();
+  scene.objects = {separableObject(*a, separableGaussianKernel(6.0f, 25)),
+                   separableObject(*b, separableGaussianKernel(1.0f, 1))};
   scene.objects[0].baseColor = *white;
   scene.objects[1].baseColor = *stripes;
   ASSERT_TRUE(renderer->renderImage(scene, kSize, kSize));
@@ -214,8 +186,8 @@ TEST_P(SeparableTest, BlurAgreesWithTheCpuReferenceOnAFlatPatch) {
   auto mesh = renderer->createMesh(patch.arrays());
   auto stripes = renderer->createTexture(makeBaseColor(256));
   ASSERT_TRUE(mesh && stripes);
-  render::Scene scene = frontScene();
-  scene.objects = {separableObject(*mesh, gaussianKernel(2.0f, 25))};
+  render::Scene scene = frontLitScene();
+  scene.objects = {separableObject(*mesh, separableGaussianKernel(2.0f, 25))};
   scene.objects[0].baseColor = *stripes;
   ASSERT_TRUE(renderer->renderImage(scene, kSize, kSize));
   auto diffuse = renderer->readFrame(render::FrameView::Diffuse);
@@ -255,11 +227,11 @@ TEST_P(SeparableTest, TimingsListEverySeparablePass) {
   auto a = renderer->createMesh(sphere.arrays());
   auto b = renderer->createMesh(patch.arrays());
   ASSERT_TRUE(a && b);
-  render::Scene scene = frontScene();
+  render::Scene scene = frontLitScene();
   scene.lights[0].castsShadows = true;
   render::SceneObject lit;
   lit.mesh = *b;
-  scene.objects = {separableObject(*a, gaussianKernel(2.0f, 11)), lit};
+  scene.objects = {separableObject(*a, separableGaussianKernel(2.0f, 11)), lit};
   std::get<render::SeparableSettings>(scene.objects[0].method).transmittance = {{1, 1, 1, 0}, {0, 0, 0, 10}};
   ASSERT_TRUE(renderer->renderImage(scene, 128, 128));
   std::vector<std::string> names;

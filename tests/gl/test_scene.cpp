@@ -109,6 +109,37 @@ Image8 makeBaseColor(int size) {
   return image;
 }
 
+std::vector<render::ProfileGaussian> deonSkinGaussians() {
+  return {{0.0064f, {0.233f, 0.455f, 0.649f}}, {0.0484f, {0.100f, 0.336f, 0.344f}},
+          {0.187f, {0.118f, 0.198f, 0.0f}},    {0.567f, {0.113f, 0.007f, 0.007f}},
+          {1.99f, {0.358f, 0.004f, 0.0f}},     {7.41f, {0.078f, 0.0f, 0.0f}}};
+}
+
+render::SeparableSettings separableGaussianKernel(float sigmaMm, int taps) {
+  render::SeparableSettings s;
+  float sum = 0.0f;
+  for (int i = 0; i < taps; ++i) {
+    const float x =
+        taps == 1 ? 0.0f : (-3.0f + 6.0f * static_cast<float>(i) / static_cast<float>(taps - 1)) * sigmaMm;
+    const float w = taps == 1 ? 1.0f : std::exp(-x * x / (2.0f * sigmaMm * sigmaMm));
+    s.kernel.push_back({w, w, w, x});
+    sum += w;
+  }
+  for (Float4& k : s.kernel)
+    k = {k.x / sum, k.y / sum, k.z / sum, k.w};
+  return s;
+}
+
+render::Scene frontLitScene() {
+  render::Scene scene;
+  scene.camera.eye = {0.0f, 0.0f, 200.0f};
+  scene.camera.nearMm = 50.0f;
+  scene.camera.farMm = 400.0f;
+  scene.lights[0].type = render::LightType::Directional;
+  scene.lights[0].direction = {0.0f, 0.0f, -1.0f};
+  return scene;
+}
+
 render::Scene goldenScene() {
   render::Scene scene;
   scene.camera.eye = {0.0f, 25.0f, 130.0f};

@@ -5,6 +5,7 @@
 
 #include "tissue/core/image.h"
 #include "tissue/render/renderer.h"
+#include "tissue/render/texture_space_math.h"
 
 namespace tissue::test {
 
@@ -31,6 +32,17 @@ Image8 makeBumpyNormalMap(int size);
 Image8 makeFlatNormalMap(int size);
 /// A base colour with a gentle stripe pattern (sRGB).
 Image8 makeBaseColor(int size);
+
+/// d'Eon & Luebke's six skin Gaussians (../shared/reference/deon_skin_gaussians.tsv): variances
+/// mm^2 and RGB weights, each channel summing to 1.
+std::vector<render::ProfileGaussian> deonSkinGaussians();
+
+/// A separable kernel: a Gaussian of standard deviation `sigmaMm` (all channels), `taps` evenly
+/// spaced over +-3 sigma, weights normalised to 1 (exact for a fronto-parallel plane up to sampling).
+render::SeparableSettings separableGaussianKernel(float sigmaMm, int taps);
+
+/// Camera on +z at 200 mm looking at the origin; a directional light straight down -z.
+render::Scene frontLitScene();
 
 /// The scene the golden images are rendered with (256 x 256).
 render::Scene goldenScene();

@@ -17,13 +17,6 @@ using render::TsdSettings;
 
 constexpr int kMapSize = 512;
 
-/// d'Eon & Luebke's skin Gaussians (../shared/reference/deon_skin_gaussians.tsv).
-std::vector<render::ProfileGaussian> deonSkin() {
-  return {{0.0064f, {0.233f, 0.455f, 0.649f}}, {0.0484f, {0.100f, 0.336f, 0.344f}},
-          {0.187f, {0.118f, 0.198f, 0.0f}},    {0.567f, {0.113f, 0.007f, 0.007f}},
-          {1.99f, {0.358f, 0.004f, 0.0f}},     {7.41f, {0.078f, 0.0f, 0.0f}}};
-}
-
 /// Texels per mm of a UV map at `size` texels: sqrt(UV area / surface area) * size.
 float texelsPerMm(const SphereMesh& m, int size) {
   double uv = 0.0, area = 0.0;
@@ -60,7 +53,7 @@ SphereMesh makePatch(int n, float sx, float sy, float stretchX = 1.0f) {
 
 TsdSettings settings(bool optimised) {
   TsdSettings s;
-  s.gaussians = deonSkin();
+  s.gaussians = deonSkinGaussians();
   s.cull = s.clip = s.depthSize = optimised;
   return s;
 }

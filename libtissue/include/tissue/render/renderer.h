@@ -10,7 +10,9 @@
 /// The frame: shadow:<light> (one depth pass per shadow-casting light) -> clear -> one pass per
 /// shading method present (lit, separable:geometry, ...) into linear HDR targets -> resolve
 /// (MSAA only) -> method post passes (separable:blur-x, separable:blur-y) -> composite (HDR,
-/// RGBA16F) -> tonemap (Reinhard, sRGB8) -> readback (offscreen only).
+/// RGBA16F) -> tonemap (Reinhard, sRGB8) -> readback (offscreen only). Texture-space objects add
+/// texture-space:irradiance, :blur and :final per object in the geometry step, and
+/// texture-space:copy after the blur when no separable object is present.
 
 #include <memory>
 #include <span>
@@ -86,9 +88,12 @@ struct RendererSettings {
 
 /// An intermediate target of the last frame, for inspection and CPU references.
 enum class FrameView {
-  Radiance,        ///< linear HDR radiance without the separable diffuse (RGB; a = 1 where covered)
-  Diffuse,         ///< separable objects' diffuse radiance before the blur (RGB; a = object id, 0 = none)
-  BlurredDiffuse,  ///< the same after both blur passes (RGB; a = object id)
+  Radiance,  ///< linear HDR radiance without the separable diffuse (RGB; a = 1 where covered)
+  /// separable objects' diffuse radiance before the blur, texture-space objects' diffused
+  /// diffuse radiance (RGB; a = object id, 0 = none)
+  Diffuse,
+  BlurredDiffuse,  ///< the same after both blur passes, which leave non-separable ids as they are (RGB; a =
+                   ///< id)
   Position,        ///< world position (xyz, mm) and view depth (w, mm; 0 where nothing was drawn)
 };
 

@@ -2,6 +2,7 @@
 #include "texture_space_passes.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -20,8 +21,12 @@ Result<TextureSpaceDiffusion> TextureSpaceDiffusion::create(const gl::GlApi& gl,
   if (!blur) return blur.error();
   auto final = gl::buildProgram(gl, library, {"texture_space/final.vert", "texture_space/final.frag", {}});
   if (!final) return final.error();
+  auto combine =
+      gl::buildProgram(gl, library, {"texture_space/fullscreen.vert", "texture_space/combine.frag", {}});
+  if (!combine) return combine.error();
   tsd.m_blur = std::move(*blur);
   tsd.m_final = std::move(*final);
+  tsd.m_combine = std::move(*combine);
   // The temporary and one map per Gaussian, all T_max^2 RGBA16F.
   const auto target = [&](gl::Texture& texture, gl::Framebuffer& framebuffer) -> Result<void> {
     auto t = createFloatTexture(gl, maxSize, GL_RGBA16F);
@@ -41,7 +46,10 @@ Result<TextureSpaceDiffusion> TextureSpaceDiffusion::create(const gl::GlApi& gl,
     if (auto r = target(tsd.m_maps[std::size_t(i)], tsd.m_mapFramebuffers[std::size_t(i)]); !r)
       return r.error();
   tsd.m_emptyVertexArray = gl::VertexArray::create(gl);
-  // Samplers: final pass base colour on unit 0, maps on units 1..8.
+  // Samplers: final pass base colour on unit 0, maps on units 1..8; combine: maps on 0..7.
+  gl.UseProgram(tsd.m_combine.id());
+  for (int i = 0; i < kMaxTsdGaussians; ++i)
+    gl.Uniform1i(gl.GetUniformLocation(tsd.m_combine.id(), ("u_maps[" + std::to_string(i) + "]").c_str()), i);
   gl.UseProgram(tsd.m_final.id());
   gl.Uniform1i(gl.GetUniformLocation(tsd.m_final.id(), "u_baseColor"), 0);
   for (int i = 0; i < kMaxTsdGaussians; ++i)
@@ -92,6 +100,12 @@ Result<void> TextureSpaceDiffusion::diffuse(GLuint vertexArray, GLsizei indexCou
     return Error{"texture space: the profile needs 1 to " + std::to_string(kMaxTsdGaussians) + " Gaussians"};
   if (auto r = m_irradiance.render(vertexArray, indexCount, frame, settings.irradiance, writePositions); !r)
     return r;
+  return convolve(settings);
+}
+
+Result<void> TextureSpaceDiffusion::convolve(const TextureSpaceDiffusionSettings& settings) {
+  if (settings.gaussians.empty() || int(settings.gaussians.size()) > kMaxTsdGaussians)
+    return Error{"texture space: the profile needs 1 to " + std::to_string(kMaxTsdGaussians) + " Gaussians"};
   const gl::GlApi& g = *m_gl;
   g.Disable(GL_DEPTH_TEST);
   g.Disable(GL_CULL_FACE);
@@ -106,6 +120,33 @@ Result<void> TextureSpaceDiffusion::diffuse(GLuint vertexArray, GLsizei indexCou
     source = m_maps[i].id();
   }
   return gl::checkGlError(g, "texture space: convolution");
+}
+
+Result<GLuint> TextureSpaceDiffusion::combine(const TextureSpaceDiffusionSettings& settings) {
+  const gl::GlApi& g = *m_gl;
+  const GLuint id = m_combine.id();
+  std::array<Float3, kMaxTsdGaussians> weights{};
+  for (std::size_t i = 0; i < settings.gaussians.size() && i < weights.size(); ++i)
+    weights[i] = settings.gaussians[i].weight;
+  // The temporary is free once the chain is done: the sum goes there.
+  g.BindFramebuffer(GL_FRAMEBUFFER, m_tempFramebuffer.id());
+  g.Viewport(0, 0, m_irradiance.size(), m_irradiance.size());
+  g.Disable(GL_DEPTH_TEST);
+  g.Disable(GL_CULL_FACE);
+  g.Disable(GL_BLEND);
+  g.UseProgram(id);
+  g.Uniform1f(g.GetUniformLocation(id, "u_mapScale"), m_irradiance.scale());
+  g.Uniform1i(g.GetUniformLocation(id, "u_gaussianCount"), GLint(settings.gaussians.size()));
+  g.Uniform3fv(g.GetUniformLocation(id, "u_weights"), kMaxTsdGaussians, &weights[0].x);
+  for (int i = 0; i < kMaxTsdGaussians; ++i) {
+    g.ActiveTexture(GLenum(GL_TEXTURE0 + i));
+    g.BindTexture(GL_TEXTURE_2D, m_maps[std::size_t(i)].id());
+  }
+  g.ActiveTexture(GL_TEXTURE0);
+  g.BindVertexArray(m_emptyVertexArray.id());
+  g.DrawArrays(GL_TRIANGLES, 0, 3);
+  if (auto r = gl::checkGlError(g, "texture space: combine"); !r) return r.error();
+  return m_temp.id();
 }
 
 FinalMaps TextureSpaceDiffusion::chainMaps(const TextureSpaceDiffusionSettings& settings) const {
