@@ -30,21 +30,13 @@ SurfaceMesh applyAtlas(const std::vector<Float3>& positions, const mesh::UvAtlas
   return out;
 }
 
-double triangleArea(Float3 a, Float3 b, Float3 c) {
-  const double ex = double(b.x - a.x), ey = double(b.y - a.y), ez = double(b.z - a.z);
-  const double fx = double(c.x - a.x), fy = double(c.y - a.y), fz = double(c.z - a.z);
-  return 0.5 * std::hypot(ey * fz - ez * fy, ez * fx - ex * fz, ex * fy - ey * fx);
-}
-
-}  // namespace
-
-Result<TsdOrgan> loadTsdOrgan(const std::filesystem::path& path, float scale) {
+Result<TsdOrgan> loadOrgan(const std::filesystem::path& path, float scale, bool allowAtlas) {
   auto loaded = mesh::loadMesh(path, {.requireUvs = false, .scaleToMm = scale});
   if (!loaded) return loaded.error();
   TsdOrgan organ;
   organ.mesh = std::move(*loaded);
   SurfaceMesh& m = organ.mesh;
-  if (!m.hasUvs() || !mesh::hasUsableUvs(m.uvs, m.triangles, m.positions.size())) {
+  if (allowAtlas && (!m.hasUvs() || !mesh::hasUsableUvs(m.uvs, m.triangles, m.positions.size()))) {
     // No usable UVs: the automatic atlas, computed once on the rest shape.
     const std::vector<Float3> geo = mesh::geometricPositionsOf(m);
     auto atlas = mesh::computeUvAtlas(geo, mesh::geometricTrianglesOf(m));
@@ -59,21 +51,27 @@ Result<TsdOrgan> loadTsdOrgan(const std::filesystem::path& path, float scale) {
   mesh::computeVertexNormals(geo, mesh::geometricTrianglesOf(m), geoNormals);
   gatherToRenderVertices(m, geoNormals, organ.normals);
   organ.tangents.resize(m.positions.size());
-  mesh::computeTangentFrames(m.positions, m.uvs, m.triangles, organ.normals, organ.tangents,
-                             m.geometricIndex);
-  double uv = 0.0, area = 0.0;
-  for (const Triangle& t : m.triangles) {
-    const Float2 a = m.uvs[t[0]], b = m.uvs[t[1]], c = m.uvs[t[2]];
-    uv += 0.5 * std::abs(double(b.x - a.x) * double(c.y - a.y) - double(b.y - a.y) * double(c.x - a.x));
-    area += triangleArea(m.positions[t[0]], m.positions[t[1]], m.positions[t[2]]);
+  if (m.hasUvs()) {
+    mesh::computeTangentFrames(m.positions, m.uvs, m.triangles, organ.normals, organ.tangents,
+                               m.geometricIndex);
+    organ.uvDensity = render::uvDensity(m.positions, m.uvs, m.triangles);
   }
-  organ.uvDensity = area > 0.0 ? float(std::sqrt(uv / area)) : 0.0f;
   organ.lo = organ.hi = m.positions.front();
   for (const Float3& p : m.positions) {
     organ.lo = {std::min(organ.lo.x, p.x), std::min(organ.lo.y, p.y), std::min(organ.lo.z, p.z)};
     organ.hi = {std::max(organ.hi.x, p.x), std::max(organ.hi.y, p.y), std::max(organ.hi.z, p.z)};
   }
   return organ;
+}
+
+}  // namespace
+
+Result<TsdOrgan> loadTsdOrgan(const std::filesystem::path& path, float scale) {
+  return loadOrgan(path, scale, true);
+}
+
+Result<TsdOrgan> loadRenderMesh(const std::filesystem::path& path, float scale) {
+  return loadOrgan(path, scale, false);
 }
 
 Result<std::vector<render::ProfileGaussian>> skinGaussians(int count) {

@@ -34,6 +34,9 @@ struct TsdOrgan {
 /// free of overlaps, else mesh::computeUvAtlas on its welded surface.
 Result<TsdOrgan> loadTsdOrgan(const std::filesystem::path& path, float scale);
 
+/// The same without the atlas: the mesh's own UVs (tangent frames from them) or none.
+Result<TsdOrgan> loadRenderMesh(const std::filesystem::path& path, float scale);
+
 /// d'Eon & Luebke's skin profile as `count` Gaussians (2, 4 or 6), from
 /// ../shared/reference/deon_skin_gaussians.tsv: the file's six, or fewer fitted to the six-term
 /// profile by optics::fitGaussians (Jimenez et al. eq. 2).

@@ -1,5 +1,6 @@
-// tissue-sim render [--mesh FILE] --out IMAGE.png [--method lit|separable [--kernel MODEL] [--taps N]]:
-// one image of a mesh, lit or with screen-space separable SSS.
+// tissue-sim render [--mesh FILE] --out IMAGE.png [--method lit|separable|texture-space|raymarch
+// [--kernel MODEL] [--taps N] [--gaussians N] ...]: one image of a mesh, lit, with screen-space
+// separable SSS or texture-space diffusion (both through the render pipeline), or ray-marched.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -9,15 +10,11 @@
 #include "command.h"
 #include "output.h"
 #include "raymarch_scene.h"
-#include "render_texture_space.h"
+#include "texture_space_setup.h"
 
 #include "../sss_material.h"
 #include "tissue/context/headless_context.h"
 #include "tissue/core/image.h"
-#include "tissue/mesh/deformable_surface.h"
-#include "tissue/mesh/load_mesh.h"
-#include "tissue/mesh/tangent_frames.h"
-#include "tissue/mesh/vertex_normals.h"
 #include "tissue/render/renderer.h"
 
 namespace tissue::sim_app {
@@ -36,9 +33,11 @@ struct RenderOptions {
   std::string baseColor;
   float scale = 1.0f;  // mm per file unit
   int samples = 4;
-  TsdRenderOptions tsd;   // --method texture-space
-  int marchSamples = 50;  // raymarch: samples per pixel
-  bool adaptive = false;  // raymarch: per-pixel sample count
+  int gaussians = 6;                                // texture-space: profile terms
+  int mapSize = 1024;                               // texture-space: T_max, texels
+  bool cull = true, clip = true, depthSize = true;  // texture-space: Jimenez et al. §3, §5, §4
+  int marchSamples = 50;                            // raymarch: samples per pixel
+  bool adaptive = false;                            // raymarch: per-pixel sample count
 };
 
 Float3 sub(Float3 a, Float3 b) {
@@ -89,42 +88,40 @@ int run(RenderOptions o, const GlobalOptions& global) {
     return fail(cmd,
                 "--method parallax is not implemented yet (issue 6, layered parallax); use lit, "
                 "separable, texture-space or raymarch");
-  if (o.method == "texture-space") {
-    o.tsd.mesh = o.mesh, o.tsd.out = o.out, o.tsd.baseColor = o.baseColor;
-    o.tsd.width = o.width, o.tsd.height = o.height, o.tsd.scale = o.scale;
-    return renderTextureSpace(o.tsd, global);
-  }
-  if (o.method != "lit" && o.method != "separable") {
+  if (o.method != "lit" && o.method != "separable" && o.method != "texture-space") {
     return fail(cmd, "--method " + o.method + " is not one of lit, separable, texture-space, raymarch");
   }
   render::SceneObject object;
-  if (o.method == "separable") {
+  if (o.method != "lit") {
     if (o.material.empty()) o.material = stem;
     auto optical = loadDataMaterial(o.material);
     if (!optical) return fail(cmd, "--material " + o.material + ": " + optical.error().message);
-    auto separable = makeSeparableMaterial(*optical, o.kernel, o.taps);
-    if (!separable)
-      return fail(cmd, "--kernel " + o.kernel + " --taps " + std::to_string(o.taps) + ": " +
-                           separable.error().message);
-    object.method = separable->settings;
+    if (o.method == "separable") {
+      auto separable = makeSeparableMaterial(*optical, o.kernel, o.taps);
+      if (!separable)
+        return fail(cmd, "--kernel " + o.kernel + " --taps " + std::to_string(o.taps) + ": " +
+                             separable.error().message);
+      object.method = separable->settings;
+    } else {
+      auto settings = makeTextureSpaceSettings(*optical, o.gaussians);
+      if (!settings)
+        return fail(cmd, "--gaussians " + std::to_string(o.gaussians) + ": " + settings.error().message);
+      settings->mapSize = o.mapSize;
+      settings->cull = o.cull, settings->clip = o.clip, settings->depthSize = o.depthSize;
+      object.method = *settings;
+    }
   }
   // Step 1: the mesh, its angle-weighted normals (per geometric vertex, so seams stay smooth)
   // and UV tangent frames.
-  auto loaded = mesh::loadMesh(o.mesh, {.requireUvs = false, .scaleToMm = o.scale});
+  // Texture space needs unique UVs: the mesh's own when usable, else the automatic atlas (whose
+  // UVs the mesh's textures do not follow).
+  auto loaded = o.method == "texture-space" ? loadTsdOrgan(o.mesh, o.scale) : loadRenderMesh(o.mesh, o.scale);
   if (!loaded) return fail(cmd, loaded.error().message);
-  SurfaceMesh& m = *loaded;
-  std::vector<Float3> geoNormals(m.geometricVertexCount), normals;
-  const std::vector<Float3> geoPositions = mesh::geometricPositionsOf(m);
-  const std::vector<Triangle> geoTriangles = mesh::geometricTrianglesOf(m);
-  mesh::computeVertexNormals(geoPositions, geoTriangles, geoNormals);
-  gatherToRenderVertices(m, geoNormals, normals);
-  std::vector<Float4> tangents(m.positions.size());
-  const bool hasUvs = m.hasUvs();
-  if (hasUvs) {
-    mesh::computeTangentFrames(m.positions, m.uvs, m.triangles, normals, tangents, m.geometricIndex);
-  } else {
-    m.uvs.assign(m.positions.size(), Float2{});  // no UVs: shade with the vertex normals only
-  }
+  SurfaceMesh& m = loaded->mesh;
+  std::vector<Float3>& normals = loaded->normals;
+  std::vector<Float4>& tangents = loaded->tangents;
+  const bool hasUvs = m.hasUvs() && !loaded->atlas;
+  if (!m.hasUvs()) m.uvs.assign(m.positions.size(), Float2{});  // no UVs: shade with the vertex normals only
   // Step 2: a context, the renderer, the mesh and textures.
   auto context = context::createHeadlessContext({}, {.backend = "", .log = false});
   if (!context) return fail(cmd, context.error().message);
@@ -179,11 +176,19 @@ int run(RenderOptions o, const GlobalOptions& global) {
   if (o.method == "separable") {
     out["kernel"] = o.kernel;
     out["taps"] = o.taps;
-    out["material"] = o.material;
   }
+  if (o.method == "texture-space") {
+    out["gaussians"] = o.gaussians;
+    out["map_size"] = o.mapSize;
+    out["cull"] = o.cull, out["clip"] = o.clip, out["depth_size"] = o.depthSize;
+    out["uvs"] =
+        loaded->atlas ? "automatic atlas (" + std::to_string(loaded->charts) + " charts)" : "the mesh's own";
+  }
+  if (o.method != "lit") out["material"] = o.material;
   out["triangles"] = m.triangles.size();
   out["shading"] = hasUvs ? (o.normalMap.empty() ? "vertex normals (no --normal-map)" : "normal-mapped")
-                          : "vertex normals (mesh has no UVs; textures ignored)";
+                   : loaded->atlas ? "vertex normals (automatic UV atlas; the mesh's textures ignored)"
+                                   : "vertex normals (mesh has no UVs; textures ignored)";
   out["normal_map"] = hasUvs ? o.normalMap : "";
   out["base_color"] = hasUvs ? o.baseColor : "";
   printResult(global, out);
@@ -194,7 +199,8 @@ int run(RenderOptions o, const GlobalOptions& global) {
 
 void registerRenderCommand(CLI::App& app, const GlobalOptions& global, int& exitCode) {
   auto opts = std::make_shared<RenderOptions>();
-  auto* cmd = app.add_subcommand("render", "render a mesh lit or with separable SSS to a PNG");
+  auto* cmd = app.add_subcommand(
+      "render", "render a mesh lit, with separable SSS, texture-space diffusion or ray marching to a PNG");
   cmd->add_option("--mesh", opts->mesh, "mesh file (OBJ, PLY, OFF, STL; default data/meshes/liver.obj)");
   cmd->add_option("--method", opts->method,
                   "shading method: lit, separable (screen-space SSS), texture-space or raymarch");
@@ -202,7 +208,7 @@ void registerRenderCommand(CLI::App& app, const GlobalOptions& global, int& exit
                   "separable kernel model: svd, preintegrated, guided, manual, deon, jimenez");
   cmd->add_option("--taps", opts->taps, "separable kernel taps per 1D pass (odd, default 17)");
   cmd->add_option("--material", opts->material,
-                  "data/materials/<NAME>.json for separable (default: the mesh's name)");
+                  "data/materials/<NAME>.json for separable and texture-space (default: the mesh's name)");
   cmd->add_option("--out", opts->out, "output PNG (written atomically)")->required();
   cmd->add_option("--width", opts->width, "image width, pixels (default 1024)");
   cmd->add_option("--height", opts->height, "image height, pixels (default 768)");
@@ -210,16 +216,15 @@ void registerRenderCommand(CLI::App& app, const GlobalOptions& global, int& exit
   cmd->add_option("--base-color", opts->baseColor, "base colour PNG, sRGB (needs UVs)");
   cmd->add_option("--scale", opts->scale, "mm per file unit (default 1)");
   cmd->add_option("--samples", opts->samples, "MSAA samples (default 4; 0 = off)");
-  cmd->add_option("--gaussians", opts->tsd.gaussians,
-                  "texture-space: skin profile terms, 2, 4 or 6 (default 6)");
-  cmd->add_option("--map-size", opts->tsd.mapSize,
-                  "texture-space: T_max, irradiance map texels (default 1024)");
+  cmd->add_option("--gaussians", opts->gaussians,
+                  "texture-space: Gaussians fitted to the material's profile, 1..8 (default 6)");
+  cmd->add_option("--map-size", opts->mapSize, "texture-space: T_max, irradiance map texels (default 1024)");
   cmd->add_flag(
-      "--no-cull", [opts](std::int64_t) { opts->tsd.cull = false; }, "texture-space: no culled map");
+      "--no-cull", [opts](std::int64_t) { opts->cull = false; }, "texture-space: no culled map");
   cmd->add_flag(
-      "--no-clip", [opts](std::int64_t) { opts->tsd.clip = false; }, "texture-space: no clipped map");
+      "--no-clip", [opts](std::int64_t) { opts->clip = false; }, "texture-space: no clipped map");
   cmd->add_flag(
-      "--no-depth-size", [opts](std::int64_t) { opts->tsd.depthSize = false; },
+      "--no-depth-size", [opts](std::int64_t) { opts->depthSize = false; },
       "texture-space: no depth-based map size");
   cmd->add_option("--march-samples", opts->marchSamples, "raymarch: samples per pixel (default 50)");
   cmd->add_flag("--adaptive", opts->adaptive, "raymarch: choose the sample count per pixel");
