@@ -25,13 +25,15 @@ uniform float u_albedoPreScatter;  // p
 uniform vec3 u_ambient;        // linear RGB irradiance added everywhere
 
 layout(location = 0) out vec4 o_irradiance;  // rgb: albedo^p E; a: 1 visible, 0 culled (or not drawn)
-layout(location = 1) out vec4 o_stretch;     // r, g: |dP/du|, |dP/dv| in mm per UV unit; b, a: 1
+layout(location = 1) out vec4 o_stretch;     // r, g: |dP/du|, |dP/dv| mm per UV unit; b: sqrt(|dP/du x dP/dv|) mm
 layout(location = 2) out vec4 o_position;    // xyz: world position, mm; w: 1
 
 void main() {
   // Stretch correction (d'Eon et al. §3.2), as texture_space/irradiance.frag.
   vec3 dPdu = dFdx(v_worldPosition) * u_mapSize, dPdv = dFdy(v_worldPosition) * u_mapSize;
-  o_stretch = vec4(length(dPdu), length(dPdv), 1.0, 1.0);
+  // b: sqrt of the area per UV unit^2 (mm; squared: mm^2, exact also for non-orthogonal axes;
+  // the square root keeps it inside half-float range).
+  o_stretch = vec4(length(dPdu), length(dPdv), sqrt(length(cross(dPdu, dPdv))), 1.0);
   o_position = vec4(v_worldPosition, 1.0);
   if (u_cull == 1 && v_eyeDot < u_cullCosine) {  // Listing 2: occluded
     o_irradiance = vec4(0.0);

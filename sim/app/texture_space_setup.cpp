@@ -126,43 +126,4 @@ render::RadialProfileTable skinProfileTable(const std::vector<render::ProfileGau
   return table;
 }
 
-Result<Image8> referenceImage(render::TextureSpaceRenderer& renderer, const render::Scene& scene, int width,
-                              int height, const render::RadialProfileTable& profile, float cutoffMm,
-                              Float3 offsetMm) {
-  auto maps = renderer.readIrradiance();
-  if (!maps) return maps.error();
-  if (maps->size != maps->maxSize) return Error{"the reference needs the full-size (unoptimised) map"};
-  // Samples: every drawn texel, its surface area |dP/du| |dP/dv| / T^2 (mm^2; the atlas is
-  // conformal, so the two directions are near orthogonal).
-  render::SurfaceSamples samples;
-  std::vector<std::size_t> texel;
-  const double t2 = double(maps->size) * double(maps->size);
-  for (std::size_t t = 0; t < maps->irradiance.texels.size(); ++t) {
-    const Float4 e = maps->irradiance.texels[t], p = maps->position.texels[t], s = maps->stretch.texels[t];
-    if (e.w <= 0.0f) continue;
-    samples.positionMm.push_back({p.x, p.y, p.z});
-    samples.areaMm2.push_back(float(double(s.x) * double(s.y) / t2));
-    samples.irradiance.push_back({e.x, e.y, e.z});
-    texel.push_back(t);
-  }
-  const auto m = render::convolveOverSurface(samples, samples.positionMm, profile, cutoffMm);
-  render::FloatMap diffused{maps->size, maps->size, std::vector<Float4>(maps->irradiance.texels.size())};
-  for (std::size_t i = 0; i < texel.size(); ++i)
-    diffused.texels[texel[i]] = {m[i].x, m[i].y, m[i].z, 1.0f};
-  return renderer.renderWithDiffusedMap(scene, width, height, diffused, offsetMm);
-}
-
-double imageRms(const Image8& a, const Image8& b) {
-  double sum = 0.0;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i + 3 < a.pixels.size() && i + 3 < b.pixels.size(); i += std::size_t(a.channels)) {
-    for (int c = 0; c < 3; ++c) {
-      const double d = double(a.pixels[i + std::size_t(c)]) - double(b.pixels[i + std::size_t(c)]);
-      sum += d * d;
-      ++n;
-    }
-  }
-  return n ? std::sqrt(sum / double(n)) : 0.0;
-}
-
 }  // namespace tissue::sim_app

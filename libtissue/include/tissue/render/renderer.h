@@ -105,6 +105,18 @@ struct FloatImage {
   const Float4& at(int x, int y) const { return pixels[static_cast<std::size_t>(y) * width + x]; }
 };
 
+/// The texture-space maps of the last texture-space object drawn: the used T x T texels of each,
+/// rows in increasing v (texel (i, j) at uv = ((i + 0.5) / T, (j + 0.5) / T) / s). For CPU
+/// references of texture-space diffusion's own model.
+struct TextureSpaceMaps {
+  int size = 0;           ///< T, texels
+  int maxSize = 0;        ///< T_max, texels
+  FloatImage irradiance;  ///< rgb albedo^p x irradiance, a = 1 where drawn and not culled
+  FloatImage stretch;     ///< r, g: |dP/du|, |dP/dv|, mm per UV unit; b: sqrt(|dP/du x dP/dv|), mm per UV unit
+  FloatImage position;    ///< xyz world position, mm; w = 1 where drawn (culled and clipped texels too)
+  FloatImage diffused;    ///< rgb sum_i w_i G(v_i) * irradiance (premultiplied by a), a = coverage
+};
+
 /// Draws scenes of deforming objects. Movable, not copyable. Every method needs the renderer's
 /// context (or one sharing with it) current; so does destruction.
 class Renderer {
@@ -157,6 +169,9 @@ class Renderer {
 
   /// Reads an intermediate target of the last frame (float RGBA, rows top to bottom).
   Result<FloatImage> readFrame(FrameView view);
+  /// Reads the texture-space maps of the last texture-space object drawn (a debugging hook for
+  /// CPU references); an Error before any texture-space object was drawn.
+  Result<TextureSpaceMaps> readTextureSpaceMaps();
 
   /// Timings of the last render call.
   const RenderTimings& lastTimings() const;

@@ -22,6 +22,18 @@ Result<gl::Texture> createFloatTexture(const gl::GlApi& gl, int size, GLenum int
   return t;
 }
 
+Result<std::vector<Float4>> readTexels(const gl::GlApi& gl, GLuint framebuffer, GLenum attachment, int size) {
+  std::vector<Float4> texels(std::size_t(size) * std::size_t(size));
+  gl.BindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+  gl.ReadBuffer(attachment);
+  gl.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
+  gl.ReadPixels(0, 0, size, size, GL_RGBA, GL_FLOAT, texels.data());
+  gl.ReadBuffer(GL_COLOR_ATTACHMENT0);
+  if (auto r = gl::checkGlError(gl, "texture space: readback"); !r) return r.error();
+  return texels;
+}
+
 Result<IrradianceMap> IrradianceMap::create(const gl::GlApi& gl, const gl::ShaderLibrary& library,
                                             int maxSize) {
   if (maxSize < 16) return Error{"texture space: the irradiance map needs at least 16 texels"};

@@ -8,6 +8,7 @@
 // texels, of which the viewport (0, 0, T, T) is used; state is set, not restored.
 #include <array>
 #include <span>
+#include <vector>
 
 #include "../lights.h"
 #include "tissue/core/result.h"
@@ -93,6 +94,10 @@ class IrradianceMap {
   float m_scale = 1.0f;
   GLint m_lightPosition = -1, m_lightRadiance = -1;
 };
+
+/// Reads the `size` x `size` texels at the origin of `framebuffer`'s `attachment` as float RGBA
+/// (rows bottom to top, increasing v), for CPU references.
+Result<std::vector<Float4>> readTexels(const gl::GlApi& gl, GLuint framebuffer, GLenum attachment, int size);
 
 /// A float texture of `size`^2 texels, linear filtering, clamped; `internal` e.g. GL_RGBA16F.
 Result<gl::Texture> createFloatTexture(const gl::GlApi& gl, int size, GLenum internal);

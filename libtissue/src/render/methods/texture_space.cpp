@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <tuple>
 
 #include "../camera_math.h"
 #include "tissue/gl/program.h"
@@ -154,6 +155,25 @@ Result<void> TextureSpaceMethod::post(const FrameContext& frame, bool separableB
                       GL_NEAREST);
     return gl::checkGlError(g, "renderer: texture-space copy of the diffuse target");
   });
+}
+
+Result<TextureSpaceMaps> TextureSpaceMethod::readMaps(const gl::GlApi& gl) const {
+  if (!m_last) return Error{"renderer: readTextureSpaceMaps before any texture-space object was drawn"};
+  const IrradianceMap& map = m_last->irradianceMap();
+  const int t = map.size();
+  TextureSpaceMaps out;
+  out.size = t;
+  out.maxSize = map.maxSize();
+  for (auto [image, framebuffer, attachment] :
+       {std::tuple{&out.irradiance, map.framebuffer(), GLenum(GL_COLOR_ATTACHMENT0)},
+        std::tuple{&out.stretch, map.framebuffer(), GLenum(GL_COLOR_ATTACHMENT1)},
+        std::tuple{&out.position, map.framebuffer(), GLenum(GL_COLOR_ATTACHMENT2)},
+        std::tuple{&out.diffused, m_last->combinedFramebuffer(), GLenum(GL_COLOR_ATTACHMENT0)}}) {
+    auto texels = readTexels(gl, framebuffer, attachment, t);
+    if (!texels) return texels.error();
+    *image = FloatImage{t, t, std::move(*texels)};
+  }
+  return out;
 }
 
 }  // namespace tissue::render

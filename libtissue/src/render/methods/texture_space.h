@@ -26,9 +26,8 @@ class TextureSpaceMethod {
   /// did. `separableBlurred`: the separable passes ran and already carried these pixels over.
   Result<void> post(const FrameContext& frame, bool separableBlurred) const;
 
-  /// The maps of the last object drawn (T x T texels of T_max^2), for CPU references; null
-  /// before the first texture-space frame.
-  const TextureSpaceDiffusion* lastMaps() const { return m_last; }
+  /// The maps of the last object drawn, read back (Renderer::readTextureSpaceMaps).
+  Result<TextureSpaceMaps> readMaps(const gl::GlApi& gl) const;
 
  private:
   Result<TextureSpaceDiffusion*> chain(const FrameContext& frame, int maxSize);

@@ -32,14 +32,9 @@ TextureSpaceDiffusionSettings passSettings(const TsdSettings& s, float reference
 }
 
 Result<FloatMap> readTexture(const gl::GlApi& g, GLuint framebuffer, GLenum attachment, int size) {
-  FloatMap map{size, size, std::vector<Float4>(std::size_t(size) * std::size_t(size))};
-  g.BindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
-  g.ReadBuffer(attachment);
-  g.PixelStorei(GL_PACK_ALIGNMENT, 4);
-  g.ReadPixels(0, 0, size, size, GL_RGBA, GL_FLOAT, map.texels.data());
-  g.ReadBuffer(GL_COLOR_ATTACHMENT0);
-  if (auto r = gl::checkGlError(g, "texture space: readback"); !r) return r.error();
-  return map;
+  auto texels = readTexels(g, framebuffer, attachment, size);
+  if (!texels) return texels.error();
+  return FloatMap{size, size, std::move(*texels)};
 }
 
 }  // namespace
