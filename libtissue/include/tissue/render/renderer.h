@@ -112,9 +112,9 @@ struct TextureSpaceMaps {
   int size = 0;           ///< T, texels
   int maxSize = 0;        ///< T_max, texels
   FloatImage irradiance;  ///< rgb albedo^p x irradiance, a = 1 where drawn and not culled
-  FloatImage stretch;     ///< r, g: |dP/du|, |dP/dv|, mm per UV unit; b: sqrt(|dP/du x dP/dv|), mm per UV unit
-  FloatImage position;    ///< xyz world position, mm; w = 1 where drawn (culled and clipped texels too)
-  FloatImage diffused;    ///< rgb sum_i w_i G(v_i) * irradiance (premultiplied by a), a = coverage
+  FloatImage stretch;   ///< r, g: |dP/du|, |dP/dv|, mm per UV unit; b: sqrt(|dP/du x dP/dv|), mm per UV unit
+  FloatImage position;  ///< xyz world position, mm; w = 1 where drawn (culled and clipped texels too)
+  FloatImage diffused;  ///< rgb sum_i w_i G(v_i) * irradiance (premultiplied by a), a = coverage
 };
 
 /// Draws scenes of deforming objects. Movable, not copyable. Every method needs the renderer's
