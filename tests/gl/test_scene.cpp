@@ -83,6 +83,25 @@ SphereMesh makePatch(float sizeMm, int cells, float zMm) {
   return m;
 }
 
+SphereMesh makeInsetPatch(int n, float sx, float sy, float stretchX) {
+  SphereMesh m;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const float u = float(i) / float(n), v = float(j) / float(n);
+      m.positions.push_back({(u - 0.5f) * sx * stretchX, (v - 0.5f) * sy, 0.0f});
+      m.normals.push_back({0.0f, 0.0f, 1.0f});
+      m.tangents.push_back({1.0f, 0.0f, 0.0f, 1.0f});
+      m.uvs.push_back({0.02f + 0.96f * u, 0.02f + 0.96f * v});
+    }
+  const auto id = [n](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return m;
+}
+
 Image8 makeBumpyNormalMap(int size) {
   return normalMapFromHeight(size, 0.008f, [](float u, float v) {
     return std::sin(2.0f * kPi * 8.0f * u) * std::sin(2.0f * kPi * 5.0f * v) +

@@ -25,6 +25,10 @@ SphereMesh makeSphere(float radiusMm, int rings, int segments);
 /// u along +x, v along +y.
 SphereMesh makePatch(float sizeMm, int cells, float zMm);
 
+/// A flat sx x sy mm patch of n x n quads in z = 0 facing +z, its x scaled by `stretchX` (the UVs
+/// are not), uv = (x / sx, y / sy) inset by 2% (texture-space tests: no texel at the map's edge).
+SphereMesh makeInsetPatch(int n, float sx, float sy, float stretchX = 1.0f);
+
 /// A bumpy tangent-space normal map: height sin(2 pi 8 u) sin(2 pi 5 v) + ridges along u, so its
 /// gradient has components along both u and v (so the handedness w matters).
 Image8 makeBumpyNormalMap(int size);
