@@ -159,6 +159,14 @@ render::Scene frontLitScene() {
   return scene;
 }
 
+render::TextureSpaceSettings skinTextureSpace(int mapSize, bool optimised) {
+  render::TextureSpaceSettings s;
+  s.gaussians = deonSkinGaussians();
+  s.cull = s.clip = s.depthSize = optimised;
+  s.mapSize = mapSize;
+  return s;
+}
+
 render::Scene goldenScene() {
   render::Scene scene;
   scene.camera.eye = {0.0f, 25.0f, 130.0f};

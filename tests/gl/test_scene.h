@@ -48,6 +48,10 @@ render::SeparableSettings separableGaussianKernel(float sigmaMm, int taps);
 /// Camera on +z at 200 mm looking at the origin; a directional light straight down -z.
 render::Scene frontLitScene();
 
+/// Texture-space settings with deonSkinGaussians(), T_max = `mapSize`, the three optimisations on
+/// or off.
+render::TextureSpaceSettings skinTextureSpace(int mapSize, bool optimised);
+
 /// The scene the golden images are rendered with (256 x 256).
 render::Scene goldenScene();
 

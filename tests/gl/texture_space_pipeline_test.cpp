@@ -14,17 +14,9 @@ namespace {
 constexpr int kSize = 256;
 constexpr int kMapSize = 512;
 
-render::TextureSpaceSettings skin(bool optimised) {
-  render::TextureSpaceSettings s;
-  s.gaussians = deonSkinGaussians();
-  s.cull = s.clip = s.depthSize = optimised;
-  s.mapSize = kMapSize;
-  return s;
-}
-
 // One Gaussian far below a texel (sigma 0.01 mm): the diffusion leaves the irradiance as it is.
 render::TextureSpaceSettings identity() {
-  render::TextureSpaceSettings s = skin(false);
+  render::TextureSpaceSettings s = skinTextureSpace(kMapSize, false);
   s.gaussians = {{1e-4f, {1.0f, 1.0f, 1.0f}}};
   return s;
 }
@@ -72,7 +64,7 @@ TEST_P(TextureSpacePipelineTest, SphereMatchesGoldenAndOptimisationsStayClose) {
   ASSERT_TRUE(renderer) << renderer.error().message;
   const Textured sphere = uploadSphere(*renderer);
   render::Scene scene = goldenScene();
-  scene.objects = {objectOf(sphere, skin(false), scene.material)};
+  scene.objects = {objectOf(sphere, skinTextureSpace(kMapSize, false), scene.material)};
   auto plain = renderer->renderImage(scene, kSize, kSize);
   ASSERT_TRUE(plain) << plain.error().message;
   for (const char* pass : {"texture-space:irradiance", "texture-space:blur", "texture-space:final",
@@ -85,7 +77,7 @@ TEST_P(TextureSpacePipelineTest, SphereMatchesGoldenAndOptimisationsStayClose) {
   // 1 level and under 1% of pixels off by more than 8 levels (the culled border and the smaller
   // map move the diffusion a little at silhouettes).
   for (int which = 0; which < 4; ++which) {
-    render::TextureSpaceSettings s = skin(false);
+    render::TextureSpaceSettings s = skinTextureSpace(kMapSize, false);
     s.cull = which == 0 || which == 3;
     s.clip = which == 1 || which == 3;
     s.depthSize = which == 2 || which == 3;
@@ -113,7 +105,7 @@ TEST_P(TextureSpacePipelineTest, UniformlyLitPatchKeepsItsMeanDiffuseBrightness)
   // The undiffused diffuse (pre-scatter albedo x irradiance), then the skin profile.
   double means[2] = {};
   for (int i = 0; i < 2; ++i) {
-    o.method = i == 0 ? identity() : skin(false);
+    o.method = i == 0 ? identity() : skinTextureSpace(kMapSize, false);
     scene.objects = {o};
     ASSERT_TRUE(renderer->renderImage(scene, kSize, kSize));
     auto diffuse = renderer->readFrame(render::FrameView::BlurredDiffuse);
@@ -173,7 +165,7 @@ TEST_P(TextureSpacePipelineTest, SeparableAndTextureSpaceObjectsSideBySide) {
   const Textured right = uploadSphere(*renderer, 30.0f, {35.0f, 0.0f, 0.0f});
   render::Scene scene = goldenScene();
   scene.objects = {objectOf(left, separableGaussianKernel(2.0f, 17), scene.material),
-                   objectOf(right, skin(true), scene.material)};
+                   objectOf(right, skinTextureSpace(kMapSize, true), scene.material)};
   auto both = renderer->renderImage(scene, kSize, kSize);
   ASSERT_TRUE(both) << both.error().message;
   auto diffuse = renderer->readFrame(render::FrameView::Diffuse);
@@ -212,8 +204,8 @@ TEST_P(TextureSpacePipelineTest, SeparableAndTextureSpaceObjectsSideBySide) {
 
 TEST_P(TextureSpacePipelineTest, OneObjectSwitchesMethodAtRunTime) {
   TISSUE_CONTEXT_OR_SKIP(context, GetParam());
-  const std::vector<render::MethodSettings> methods = {render::LitSettings{},
-                                                       separableGaussianKernel(2.0f, 17), skin(true)};
+  const std::vector<render::MethodSettings> methods = {
+      render::LitSettings{}, separableGaussianKernel(2.0f, 17), skinTextureSpace(kMapSize, true)};
   const char* passes[] = {"lit", "separable:blur-y", "texture-space:final"};
   render::Scene scene = goldenScene();
   // Each method's image from a renderer that only ever drew that method.
@@ -251,7 +243,7 @@ TEST_P(TextureSpacePipelineTest, BadSettingsAreErrors) {
   auto image = renderer->renderImage(scene, 64, 64);
   ASSERT_FALSE(image);
   EXPECT_NE(image.error().message.find("Gaussians"), std::string::npos) << image.error().message;
-  s = skin(true);
+  s = skinTextureSpace(kMapSize, true);
   std::swap(s.gaussians[0], s.gaussians[1]);  // decreasing variances
   scene.objects[0].method = s;
   EXPECT_FALSE(renderer->renderImage(scene, 64, 64));

@@ -36,14 +36,6 @@ struct Fixture {
   TextureSpaceRenderer renderer;
 };
 
-render::TextureSpaceSettings pipelineSettings(bool optimised) {
-  render::TextureSpaceSettings s;
-  s.gaussians = deonSkinGaussians();
-  s.cull = s.clip = s.depthSize = optimised;
-  s.mapSize = kMapSize;
-  return s;
-}
-
 // A renderer drawing one mesh with texture-space diffusion, returning its maps.
 class TextureSpaceMapsTest : public ::testing::Test {
  protected:
@@ -121,7 +113,7 @@ TEST_F(TextureSpaceMapsTest, UniformlyLitPatchKeepsItsMeanBrightness) {
   render::Scene scene = goldenScene();
   scene.camera.eye = {0.0f, 0.0f, 150.0f};
   scene.lights[0].positionMm = {0.0f, 0.0f, 1e6f};  // N.L = 1 everywhere: uniform irradiance
-  auto maps = renderMaps(scene, 64, 64, pipelineSettings(false));
+  auto maps = renderMaps(scene, 64, 64, skinTextureSpace(kMapSize, false));
   ASSERT_TRUE(maps) << maps.error().message;
   double e = 0.0, m = 0.0, worst = 0.0;
   int covered = 0;
@@ -140,7 +132,7 @@ TEST_F(TextureSpaceMapsTest, StretchMapMatchesRestAndStretchedPatch) {
   for (float stretchX : {1.0f, 1.5f}) {
     const SphereMesh patch = makeInsetPatch(10, 40.0f, 20.0f, stretchX);
     setMesh(patch);
-    auto maps = renderMaps(goldenScene(), 32, 32, pipelineSettings(false));
+    auto maps = renderMaps(goldenScene(), 32, 32, skinTextureSpace(kMapSize, false));
     ASSERT_TRUE(maps) << maps.error().message;
     // mm per UV unit: the 40 x 20 mm patch spans 0.96 of the map each way.
     const double expectU = 40.0 * double(stretchX) / 0.96, expectV = 20.0 / 0.96;
@@ -163,7 +155,7 @@ TEST_F(TextureSpaceMapsTest, DepthSizeCullAndClipOnKnownGeometry) {
   scene.camera.eye = {0.0f, 0.0f, 400.0f};
   scene.camera.farMm = 1000.0f;
   // Depth-based size: eq. 3-4 with d to the nearest corner of [-40, 40]^3 from (0, 0, 400).
-  render::TextureSpaceSettings s = pipelineSettings(false);
+  render::TextureSpaceSettings s = skinTextureSpace(kMapSize, false);
   s.depthSize = true;
   auto maps = renderMaps(scene, 200, 200, s);
   ASSERT_TRUE(maps) << maps.error().message;
@@ -174,7 +166,7 @@ TEST_F(TextureSpaceMapsTest, DepthSizeCullAndClipOnKnownGeometry) {
   EXPECT_LT(maps->size, kMapSize);
   // Culled: the area within 105 degrees of the view direction, (1 + cos 75 deg... ) = (1 + 0.2588) / 2
   // of a sphere seen from far; from 10 radii a little less.
-  s = pipelineSettings(false);
+  s = skinTextureSpace(kMapSize, false);
   s.cull = true;
   maps = renderMaps(scene, 200, 200, s);
   ASSERT_TRUE(maps) << maps.error().message;
@@ -193,9 +185,9 @@ TEST_F(TextureSpaceMapsTest, DepthSizeCullAndClipOnKnownGeometry) {
   scene.camera.eye = {60.0f, 0.0f, 60.0f};
   scene.camera.target = {60.0f, 0.0f, 0.0f};
   scene.camera.nearMm = 1.0f;
-  auto positions = renderMaps(scene, 200, 200, pipelineSettings(false));
+  auto positions = renderMaps(scene, 200, 200, skinTextureSpace(kMapSize, false));
   ASSERT_TRUE(positions) << positions.error().message;
-  s = pipelineSettings(false);
+  s = skinTextureSpace(kMapSize, false);
   s.clip = true;
   maps = renderMaps(scene, 200, 200, s);
   ASSERT_TRUE(maps) << maps.error().message;
