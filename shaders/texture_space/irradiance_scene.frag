@@ -35,8 +35,12 @@ void main() {
   // the square root keeps it inside half-float range).
   o_stretch = vec4(length(dPdu), length(dPdv), sqrt(length(cross(dPdu, dPdv))), 1.0);
   o_position = vec4(v_worldPosition, 1.0);
+  // Visibility also goes to depth (0 visible, 1 culled): the blur passes skip culled and empty
+  // texels by an early depth test, which saves work where a shader branch would not.
+  gl_FragDepth = 0.0;
   if (u_cull == 1 && v_eyeDot < u_cullCosine) {  // Listing 2: occluded
     o_irradiance = vec4(0.0);
+    gl_FragDepth = 1.0;
     return;
   }
   vec3 Ng = normalize(v_normal);

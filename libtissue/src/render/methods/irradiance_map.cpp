@@ -69,8 +69,12 @@ Result<IrradianceMap> IrradianceMap::create(const gl::GlApi& gl, const gl::Shade
   map.m_irradiance = std::move(*irradiance);
   map.m_stretch = std::move(*stretch);
   map.m_position = std::move(*position);
+  map.m_depth = gl::Renderbuffer::create(gl);
+  gl.BindRenderbuffer(GL_RENDERBUFFER, map.m_depth.id());
+  gl.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, maxSize, maxSize);
   map.m_framebuffer = gl::Framebuffer::create(gl);
   gl.BindFramebuffer(GL_FRAMEBUFFER, map.m_framebuffer.id());
+  gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, map.m_depth.id());
   gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, map.m_irradiance.id(), 0);
   gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, map.m_stretch.id(), 0);
   gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, map.m_position.id(), 0);
@@ -104,7 +108,9 @@ void IrradianceMap::begin(GLuint program, const IrradianceFrame& frame, const Ir
   g.Scissor(0, 0, m_size, m_size);
   g.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   g.ClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-  g.Clear(GL_COLOR_BUFFER_BIT);
+  g.ClearDepth(1.0);
+  g.DepthMask(GL_TRUE);
+  g.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   g.Disable(GL_SCISSOR_TEST);
   g.Disable(GL_DEPTH_TEST);
   g.Disable(GL_CULL_FACE);  // charts may be mirrored in UV space
@@ -140,6 +146,7 @@ Result<void> IrradianceMap::render(GLuint vertexArray, GLsizei indexCount, const
                                    const IrradianceMapSettings& settings, bool writePositions) {
   const gl::GlApi& g = *m_gl;
   begin(m_program.id(), frame, settings, writePositions);
+  m_visibilityInDepth = false;
   g.Uniform3f(m_lightPosition, frame.lightPosition.x, frame.lightPosition.y, frame.lightPosition.z);
   g.Uniform3f(m_lightRadiance, frame.lightRadiance.x, frame.lightRadiance.y, frame.lightRadiance.z);
   return draw(vertexArray, indexCount, settings.clip);
@@ -154,6 +161,10 @@ Result<void> IrradianceMap::render(GLuint vertexArray, GLsizei indexCount, const
     return Error{"texture space: at most " + std::to_string(kMaxTransmittanceRows) + " transmittance rows"};
   const GLuint program = m_scene[lighting.normalMap ? 1 : 0].id();
   begin(program, frame, settings, writePositions);
+  // Visibility into depth (irradiance_scene.frag: 0 visible, 1 culled), every texel written.
+  g.Enable(GL_DEPTH_TEST);
+  g.DepthFunc(GL_ALWAYS);
+  m_visibilityInDepth = true;
   auto at = [&](const char* name) { return g.GetUniformLocation(program, name); };
   constexpr int kShadowUnit = 2;
   setLightUniforms(g, program, *lighting.lights, kShadowUnit);

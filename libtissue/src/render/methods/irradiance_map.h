@@ -73,6 +73,12 @@ class IrradianceMap {
   GLuint stretch() const { return m_stretch.id(); }        ///< rg mm per UV unit
   GLuint position() const { return m_position.id(); }      ///< xyz world mm (when written)
   GLuint framebuffer() const { return m_framebuffer.id(); }
+  /// Depth renderbuffer (T_max^2): after a scene-lit render, 0 where a texel is drawn and visible,
+  /// 1 where culled or empty, so later passes can skip those texels by an early depth test (on
+  /// llvmpipe a branch in the shader saves nothing: both sides run, masked).
+  GLuint visibilityDepth() const { return m_depth.id(); }
+  /// True when the last render wrote visibilityDepth() (the scene-lit overload).
+  bool visibilityInDepth() const { return m_visibilityInDepth; }
   int maxSize() const { return m_maxSize; }  ///< T_max, texels
   int size() const { return m_size; }        ///< T of the last render, texels
   float scale() const { return m_scale; }    ///< s of the last render (T / T_max)
@@ -90,6 +96,8 @@ class IrradianceMap {
   gl::Program m_scene[2];  // scene lights: vertex normals, normal-mapped (TISSUE_NORMAL_MAP)
   gl::Texture m_irradiance, m_stretch, m_position;
   gl::Framebuffer m_framebuffer;
+  gl::Renderbuffer m_depth;
+  bool m_visibilityInDepth = false;
   int m_maxSize = 0, m_size = 0;
   float m_scale = 1.0f;
   GLint m_lightPosition = -1, m_lightRadiance = -1;

@@ -45,6 +45,15 @@ Result<TextureSpaceDiffusion> TextureSpaceDiffusion::create(const gl::GlApi& gl,
   for (int i = 0; i < kMaxTsdGaussians; ++i)
     if (auto r = target(tsd.m_maps[std::size_t(i)], tsd.m_mapFramebuffers[std::size_t(i)]); !r)
       return r.error();
+  // Every blur target shares the irradiance map's visibility depth (culled texels skipped, §3).
+  const auto attachDepth = [&](const gl::Framebuffer& f) {
+    gl.BindFramebuffer(GL_FRAMEBUFFER, f.id());
+    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                               tsd.m_irradiance.visibilityDepth());
+  };
+  attachDepth(tsd.m_tempFramebuffer);
+  for (const gl::Framebuffer& f : tsd.m_mapFramebuffers)
+    attachDepth(f);
   tsd.m_emptyVertexArray = gl::VertexArray::create(gl);
   // Samplers: final pass base colour on unit 0, maps on units 1..8; combine: maps on 0..7.
   gl.UseProgram(tsd.m_combine.id());
@@ -66,10 +75,8 @@ Result<void> TextureSpaceDiffusion::blur(GLuint source, GLuint target, float sig
                                          const TextureSpaceDiffusionSettings& settings) {
   const gl::GlApi& g = *m_gl;
   const GLuint id = m_blur.id();
-  const int size = m_irradiance.size();
   const float scale = m_irradiance.scale();
-  g.BindFramebuffer(GL_FRAMEBUFFER, target);
-  g.Viewport(0, 0, size, size);
+  bindTexels(target, settings.irradiance.cull);
   g.UseProgram(id);
   g.Uniform2f(g.GetUniformLocation(id, "u_direction"), horizontal ? 1.0f : 0.0f, horizontal ? 0.0f : 1.0f);
   g.Uniform1f(g.GetUniformLocation(id, "u_sigmaMm"), sigmaMm);
@@ -119,6 +126,7 @@ Result<void> TextureSpaceDiffusion::convolve(const TextureSpaceDiffusionSettings
     if (auto r = blur(m_temp.id(), m_mapFramebuffers[i].id(), sigma, false, settings); !r) return r;
     source = m_maps[i].id();
   }
+  g.Disable(GL_DEPTH_TEST);
   return gl::checkGlError(g, "texture space: convolution");
 }
 
@@ -129,9 +137,7 @@ Result<GLuint> TextureSpaceDiffusion::combine(const TextureSpaceDiffusionSetting
   for (std::size_t i = 0; i < settings.gaussians.size() && i < weights.size(); ++i)
     weights[i] = settings.gaussians[i].weight;
   // The temporary is free once the chain is done: the sum goes there.
-  g.BindFramebuffer(GL_FRAMEBUFFER, m_tempFramebuffer.id());
-  g.Viewport(0, 0, m_irradiance.size(), m_irradiance.size());
-  g.Disable(GL_DEPTH_TEST);
+  bindTexels(m_tempFramebuffer.id(), settings.irradiance.cull);
   g.Disable(GL_CULL_FACE);
   g.Disable(GL_BLEND);
   g.UseProgram(id);
@@ -145,8 +151,30 @@ Result<GLuint> TextureSpaceDiffusion::combine(const TextureSpaceDiffusionSetting
   g.ActiveTexture(GL_TEXTURE0);
   g.BindVertexArray(m_emptyVertexArray.id());
   g.DrawArrays(GL_TRIANGLES, 0, 3);
+  g.Disable(GL_DEPTH_TEST);
   if (auto r = gl::checkGlError(g, "texture space: combine"); !r) return r.error();
   return m_temp.id();
+}
+
+void TextureSpaceDiffusion::bindTexels(GLuint target, bool skipCulled) const {
+  const gl::GlApi& g = *m_gl;
+  const int size = m_irradiance.size();
+  g.BindFramebuffer(GL_FRAMEBUFFER, target);
+  g.Viewport(0, 0, size, size);
+  if (!skipCulled || !m_irradiance.visibilityInDepth()) {
+    g.Disable(GL_DEPTH_TEST);
+    return;
+  }
+  // Culled and empty texels (depth 1) fail GL_GREATER for the full-screen triangle (depth 0.5)
+  // before shading (§3's "convolution skipped where alpha is 0"); they keep the cleared 0.
+  g.Enable(GL_SCISSOR_TEST);
+  g.Scissor(0, 0, size, size);
+  g.ClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  g.Clear(GL_COLOR_BUFFER_BIT);
+  g.Disable(GL_SCISSOR_TEST);
+  g.Enable(GL_DEPTH_TEST);
+  g.DepthFunc(GL_GREATER);
+  g.DepthMask(GL_FALSE);
 }
 
 FinalMaps TextureSpaceDiffusion::chainMaps(const TextureSpaceDiffusionSettings& settings) const {

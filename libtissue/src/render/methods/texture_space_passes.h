@@ -73,6 +73,9 @@ class TextureSpaceDiffusion {
  private:
   Result<void> blur(GLuint source, GLuint target, float sigmaMm, bool horizontal,
                     const TextureSpaceDiffusionSettings& settings);
+  // Binds `target` with the used T x T viewport; with `skipCulled` (and the map's visibility in
+  // depth) clears it and sets the depth test that rejects culled and empty texels.
+  void bindTexels(GLuint target, bool skipCulled) const;
   const gl::GlApi* m_gl = nullptr;
   IrradianceMap m_irradiance;
   gl::Program m_blur, m_final, m_combine;
