@@ -60,12 +60,8 @@ class TextureSpaceDiffusion {
 
   const IrradianceMap& irradianceMap() const { return m_irradiance; }
   IrradianceMap& irradianceMap() { return m_irradiance; }
-  /// The irradiance blurred by Gaussian i (cumulative variance v_i).
-  GLuint blurred(int i) const { return m_maps[std::size_t(i)].id(); }
   /// The framebuffer holding combine()'s map (for readback).
   GLuint combinedFramebuffer() const { return m_tempFramebuffer.id(); }
-  /// The framebuffer writing blurred map i (for readback).
-  GLuint blurredFramebuffer(int i) const { return m_mapFramebuffers[std::size_t(i)].id(); }
 
   /// Empty (create() makes a usable one).
   TextureSpaceDiffusion() = default;
