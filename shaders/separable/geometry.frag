@@ -11,21 +11,7 @@
 #include "common/surface.glsl"
 #include "common/blinn_phong.glsl"
 #include "common/lights.glsl"
-
-#define MAX_TRANSMITTANCE_ROWS 16
-uniform int u_transmittanceRows;                         // 0 = no transmission
-uniform vec4 u_transmittance[MAX_TRANSMITTANCE_ROWS];    // {T_R, T_G, T_B, thickness mm}, increasing
-uniform float u_transmissionShrinkMm;                    // mm pushed inside before the lookup
-
-// T(d) by linear interpolation in the table, clamped at both ends.
-vec3 transmittance(float d) {
-  if (d <= u_transmittance[0].w) return u_transmittance[0].rgb;
-  for (int i = 1; i < u_transmittanceRows; ++i) {
-    vec4 a = u_transmittance[i - 1], b = u_transmittance[i];
-    if (d <= b.w) return mix(a.rgb, b.rgb, (d - a.w) / max(b.w - a.w, 1e-6));
-  }
-  return u_transmittance[u_transmittanceRows - 1].rgb;
-}
+#include "common/transmittance.glsl"
 
 void main() {
   vec3 N = surfaceNormal();
@@ -39,10 +25,7 @@ void main() {
     vec3 E = u_lightRadiance[i] * shadowFactor(i, v_worldPosition, Ng);
     diffuse += lambertDiffuse(N, L, albedo) * E;
     specular += blinnPhongSpecular(N, L, V, u_specular, u_shininess) * E;
-    if (u_transmittanceRows > 0 && u_lightShadowLayer[i] >= 0) {
-      float d = thicknessMm(i, v_worldPosition - Ng * u_transmissionShrinkMm);
-      diffuse += transmittance(d) * u_lightRadiance[i] * albedo * clamp(0.3 + dot(-Ng, L), 0.0, 1.0);
-    }
+    diffuse += transmittedLight(i, v_worldPosition, Ng, L) * albedo;
   }
   o_radiance = vec4(specular, 1.0);
   o_diffuse = vec4(diffuse, u_objectId);

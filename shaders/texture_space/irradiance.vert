@@ -5,6 +5,7 @@
 
 layout(location = 0) in vec3 a_position;  // mm, world
 layout(location = 1) in vec3 a_normal;    // unit, world
+layout(location = 2) in vec4 a_tangent;   // unit T, handedness w (normal mapping, irradiance_scene.frag)
 layout(location = 3) in vec2 a_uv;
 
 uniform mat4 u_view;             // world (mm) to eye (mm)
@@ -15,6 +16,8 @@ uniform vec3 u_offset;           // mm, translation of this instance
 out float gl_ClipDistance[6];
 out vec3 v_worldPosition;
 out vec3 v_normal;
+out vec4 v_tangent;
+out vec2 v_uv;
 out float v_eyeDot;  // cos of the angle between the normal and the direction to the eye
 
 void main() {
@@ -26,6 +29,8 @@ void main() {
   v_eyeDot = dot(normalize(normalEye), normalize(-eye.xyz));
   v_worldPosition = world;
   v_normal = a_normal;
+  v_tangent = a_tangent;
+  v_uv = a_uv;
   for (int i = 0; i < 6; ++i)
     gl_ClipDistance[i] = u_clip == 1 ? dot(u_clipPlanes[i], eye) : 1.0;
   // The viewport is (0, 0, T, T) (§4): uv in [0, 1] fills it.

@@ -11,6 +11,7 @@
 #include "tissue/context/headless_context.h"
 #include "tissue/core/image.h"
 #include "tissue/core/stopwatch.h"
+#include "tissue/mesh/uv_atlas.h"
 #include "tissue/reference/screen_convolution.h"
 #include "tissue/render/renderer.h"
 
@@ -99,38 +100,22 @@ Result<void> DemoRenderer::render(const mesh::DeformableSurface& surface, const 
   return writePng(png, *image);
 }
 
-nlohmann::json DemoRenderer::renderSeparable(const mesh::DeformableSurface& surface,
-                                             const LayeredMaterial& material,
-                                             const std::filesystem::path& png) {
-  auto& s = *m_impl;
-  auto fail = [](const std::string& why) { return nlohmann::json{{"skipped", why}}; };
-  // Step 1: the kernel from the material's first layer (dipole profile, pre-integrated).
-  auto optical = loadDataMaterial(material.name);
-  if (!optical) return fail(optical.error().message);
-  auto separable = makeSeparableMaterial(*optical, "preintegrated", 17);
-  if (!separable) return fail(separable.error().message);
-  // Step 2: the organ as it is now, lit by a shadow-casting lamp (shadows and transmission).
-  if (auto lit = render(surface, material, png); !lit) return fail(lit.error().message);
-  s.scene.objects[0].method = separable->settings;
-  s.scene.lights[0].castsShadows = true;
-  auto image = s.renderer->renderImage(s.scene, s.width, s.height);
-  s.scene.lights[0].castsShadows = false;
-  if (!image) return fail(image.error().message);
-  if (auto w = writePng(png, *image); !w) return fail(w.error().message);
-  nlohmann::json j{{"image", png.filename().string()},
-                   {"kernel", separable->kernelName},
-                   {"material", optical->name},
-                   {"passes", passTimingsJson(s.renderer->lastTimings())},
-                   {"total_cpu_ms", s.renderer->lastTimings().totalCpuMs}};
-  // Step 3: the blurred diffuse against the CPU reference on this frame.
-  auto diffuse = s.renderer->readFrame(render::FrameView::Diffuse);
-  auto position = s.renderer->readFrame(render::FrameView::Position);
-  auto blurred = s.renderer->readFrame(render::FrameView::BlurredDiffuse);
-  auto radiance = s.renderer->readFrame(render::FrameView::Radiance);
-  if (!diffuse || !position || !blurred || !radiance) return j;
-  dropPartialCoverage(diffuse->pixels, *radiance);  // MSAA silhouettes are not surface points
-  const reference::ScreenBuffers frame{s.width, s.height, diffuse->pixels, position->pixels};
-  const std::vector<reference::RadialProfile> profiles{{}, separable->truth};
+namespace {
+
+/// The frame's subsurface diffuse (after the blur or the texture-space diffusion) against the
+/// exact convolution of its pre-blur diffuse with `truth` (tissue::reference), into `j`.
+/// Texture-space pixels hold their diffused radiance in the Diffuse view, so the caller passes
+/// the pre-blur frame of the same organ rendered separably (`before`).
+void addReferenceError(render::Renderer& renderer, const render::FloatImage& diffuse,
+                       const render::FloatImage& position, const reference::RadialProfile& truth,
+                       nlohmann::json& j) {
+  auto blurred = renderer.readFrame(render::FrameView::BlurredDiffuse);
+  auto radiance = renderer.readFrame(render::FrameView::Radiance);
+  if (!blurred || !radiance) return;
+  std::vector<Float4> pre = diffuse.pixels;
+  dropPartialCoverage(pre, *radiance);  // MSAA silhouettes are not surface points
+  const reference::ScreenBuffers frame{diffuse.width, diffuse.height, pre, position.pixels};
+  const std::vector<reference::RadialProfile> profiles{{}, truth};
   Stopwatch watch;
   if (auto exact = reference::convolveScreen(frame, profiles); exact) {
     j["reference_ms"] = watch.elapsedMs();
@@ -138,6 +123,51 @@ nlohmann::json DemoRenderer::renderSeparable(const mesh::DeformableSurface& surf
     j["image_rms"] = e.rms;
     j["relative_rms"] = e.relativeRms;
   }
+}
+
+}  // namespace
+
+nlohmann::json DemoRenderer::renderSubsurface(const mesh::DeformableSurface& surface,
+                                              const LayeredMaterial& material, const std::filesystem::path& png,
+                                              bool textureSpace) {
+  auto& s = *m_impl;
+  auto fail = [](const std::string& why) { return nlohmann::json{{"skipped", why}}; };
+  // Step 1: both methods' settings from the material's first layer (its dipole profile).
+  auto optical = loadDataMaterial(material.name);
+  if (!optical) return fail(optical.error().message);
+  auto separable = makeSeparableMaterial(*optical, "preintegrated", 17);
+  if (!separable) return fail(separable.error().message);
+  auto tsd = makeTextureSpaceSettings(*optical, 6);
+  if (!tsd) return fail(tsd.error().message);
+  if (textureSpace && !mesh::hasUsableUvs(surface.uvs(), surface.triangles(), surface.positions().size()))
+    return fail("texture-space diffusion needs unique UVs and the organ's overlap (see mesh::computeUvAtlas)");
+  // Step 2: the organ as it is now, separable, lit by a shadow-casting lamp (shadows and
+  // transmission); its pre-blur diffuse is the reference's input for both methods.
+  if (auto lit = render(surface, material, png); !lit) return fail(lit.error().message);
+  s.scene.objects[0].method = separable->settings;
+  s.scene.lights[0].castsShadows = true;
+  auto image = s.renderer->renderImage(s.scene, s.width, s.height);
+  auto diffuse = s.renderer->readFrame(render::FrameView::Diffuse);
+  auto position = s.renderer->readFrame(render::FrameView::Position);
+  // Step 3: the same object switched to texture-space diffusion at run time.
+  if (image && textureSpace) {
+    s.scene.objects[0].method = *tsd;
+    image = s.renderer->renderImage(s.scene, s.width, s.height);
+  }
+  s.scene.lights[0].castsShadows = false;
+  s.scene.objects[0].method = render::LitSettings{};
+  if (!image) return fail(image.error().message);
+  if (auto w = writePng(png, *image); !w) return fail(w.error().message);
+  nlohmann::json j{{"image", png.filename().string()},
+                   {"material", optical->name},
+                   {"passes", passTimingsJson(s.renderer->lastTimings())},
+                   {"total_cpu_ms", s.renderer->lastTimings().totalCpuMs}};
+  if (textureSpace)
+    j["gaussians"] = tsd->gaussians.size();
+  else
+    j["kernel"] = separable->kernelName;
+  // Step 4: the subsurface diffuse against the CPU reference on this frame.
+  if (diffuse && position) addReferenceError(*s.renderer, *diffuse, *position, separable->truth, j);
   return j;
 }
 

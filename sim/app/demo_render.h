@@ -25,10 +25,13 @@ class DemoRenderer {
   Result<void> render(const mesh::DeformableSurface& surface, const LayeredMaterial& material,
                       const std::filesystem::path& png);
   /// Renders the surface as it is now with screen-space separable SSS (the material's dipole
-  /// profile, pre-integrated kernel, 17 taps), writes `png`, and reports the kernel, the pass
-  /// timings and the image RMS against the CPU reference; {"skipped": why} when it cannot.
-  nlohmann::json renderSeparable(const mesh::DeformableSurface& surface, const LayeredMaterial& material,
-                                 const std::filesystem::path& png);
+  /// profile, pre-integrated kernel, 17 taps) or, with `textureSpace`, with texture-space
+  /// diffusion (d'Eon et al. 2007 with the culled, depth-sized and clipped maps of Jimenez et al.
+  /// 2008; six Gaussians fitted to the same profile, the organ's own UVs); writes `png` and
+  /// reports the pass timings and the image RMS of the subsurface diffuse against the CPU
+  /// reference (the exact convolution of the same frame); {"skipped": why} when it cannot.
+  nlohmann::json renderSubsurface(const mesh::DeformableSurface& surface, const LayeredMaterial& material,
+                                  const std::filesystem::path& png, bool textureSpace);
   /// Renders the surface as it is now with layered parallax (Oat 2006; Norberg §2.2): the
   /// organ's base colour and normal map as the outer layer, its opacity map, and the vessel
   /// network (inner_base.png) 1.5 mm below; writes `png` and reports the pass timings.

@@ -8,7 +8,6 @@
 #include <sstream>
 
 #include "demo_render.h"
-#include "demo_texture_space.h"
 #include "material_file.h"
 #include "output.h"
 #include "raymarch_scene.h"
@@ -254,13 +253,19 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
     report["render"]["images"] = images;
   }
 
-  // The poked organ (the surface is in that state after the last renderFrame) in separable SSS,
-  // texture-space diffusion and ray-marched subsurface texture mapping.
+  // The poked organ (the surface is in that state after the last renderFrame) in the four
+  // subsurface methods, one object switched between them at run time (ray marching on its own
+  // renderer, with the planes), then side by side.
   report["render_separable"] =
-      renderer.renderSeparable(*d.surface, d.material, o.outDir / "frame_poked_separable.png");
+      renderer.renderSubsurface(*d.surface, d.material, o.outDir / "frame_poked_separable.png", false);
   report["texture_space"] =
-      renderTextureSpaceDemo(*d.surface, o.outDir / "frame_poked_texture_space.png", o.width, o.height);
+      renderer.renderSubsurface(*d.surface, d.material, o.outDir / "frame_poked_texture_space.png", true);
   report["raymarch"] = renderPokedOrganRayMarch(*d.surface, d.material.name, o.outDir, o.width, o.height);
+  report["parallax"] = renderer.renderParallax(*d.surface, d.material, o.outDir / "frame_poked_parallax.png");
+  report["methods"] = writeMethodsMontage(o.outDir,
+                                          {"frame_poked_separable.png", "frame_poked_texture_space.png",
+                                           "frame_poked_raymarch.png", "frame_poked_parallax.png"},
+                                          "frame_poked_methods.png");
 
   // Inspection: the poked organ with its shading fields, for ParaView.
   if (auto vtp = writeInspection(*d.surface, o.outDir / "organ_poked.vtp"); !vtp) return vtp.error();

@@ -115,4 +115,27 @@ Result<std::vector<SssBenchRow>> separableBenchRows(SssBenchContext& ctx, nlohma
   return rows;
 }
 
+Result<std::vector<SssBenchRow>> textureSpaceBenchRows(SssBenchContext& ctx, nlohmann::json& skipped) {
+  // The reference convolves a pre-blur (undiffused) frame: the separable rows' first frame.
+  if (ctx.reference.empty())
+    return Error{"texture-space rows need the reference of the separable rows; run those first"};
+  std::vector<SssBenchRow> rows;
+  for (const int n : {2, 4, 6}) {
+    const std::string setting = std::to_string(n) + "-gaussians";
+    auto settings = makeTextureSpaceSettings(ctx.material, n);
+    if (!settings) {
+      skipped.push_back(
+          {{"method", "texture-space"}, {"setting", setting}, {"reason", settings.error().message}});
+      continue;
+    }
+    ctx.scene.objects.at(0).method = *settings;
+    auto ms = timeFrames(ctx, "texture-space:");
+    if (!ms) return ms.error();
+    auto error = compareLastFrame(ctx);
+    if (!error) return error.error();
+    rows.push_back({"texture-space", setting, ms->first, ms->second, error->rms, error->relativeRms});
+  }
+  return rows;
+}
+
 }  // namespace tissue::sim_app

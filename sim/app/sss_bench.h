@@ -66,6 +66,11 @@ Result<reference::ImageError> compareLastFrame(SssBenchContext& ctx);
 /// be built for the material (e.g. manual without Table A.1 parameters) go to `skipped`.
 Result<std::vector<SssBenchRow>> separableBenchRows(SssBenchContext& ctx, nlohmann::json& skipped);
 
+/// The texture-space method's rows: 2, 4 and 6 Gaussians fitted to the material's dipole
+/// profile, all three irradiance-map optimisations on, T_max = 1024, pre-scatter albedo (the
+/// quantity the separable method blurs), compared with the same reference.
+Result<std::vector<SssBenchRow>> textureSpaceBenchRows(SssBenchContext& ctx, nlohmann::json& skipped);
+
 /// A method of the bench: its name and how it makes its rows.
 struct SssBenchMethod {
   const char* name;

@@ -6,6 +6,7 @@
 #include "output.h"
 #include "tissue/optics/ground_truth_kernel.h"
 #include "tissue/optics/kernel.h"
+#include "tissue/optics/kernel_gaussians.h"
 
 namespace tissue::sim_app {
 namespace {
@@ -87,6 +88,22 @@ Result<SeparableMaterial> makeSeparableMaterial(const optics::ScatteringMaterial
   out.settings.transmittance = transmittanceTable(out.truth);
   out.kernelName = std::string(optics::kernelModelName(*kind)) + (rank > 1 ? std::to_string(rank) : "") +
                    "-" + std::to_string(taps);
+  return out;
+}
+
+Result<render::TextureSpaceSettings> makeTextureSpaceSettings(const optics::ScatteringMaterial& material,
+                                                              int gaussians) {
+  auto profile = optics::groundTruthProfile(material);
+  if (!profile) return profile.error();
+  auto sum = optics::fitGaussians(*profile, gaussians);
+  if (!sum) return Error{"texture-space profile of '" + material.name + "': " + sum.error().message};
+  render::TextureSpaceSettings out;
+  for (std::size_t i = 0; i < sum->varianceMm2.size(); ++i) {
+    out.gaussians.push_back({static_cast<float>(sum->varianceMm2[i]),
+                             {static_cast<float>(sum->weights[0][i]), static_cast<float>(sum->weights[1][i]),
+                              static_cast<float>(sum->weights[2][i])}});
+  }
+  out.transmittance = transmittanceTable(toReference(*profile));
   return out;
 }
 

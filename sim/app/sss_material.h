@@ -30,6 +30,13 @@ struct SeparableMaterial {
 Result<SeparableMaterial> makeSeparableMaterial(const optics::ScatteringMaterial& material,
                                                 const std::string& model, int taps, int rank = 1);
 
+/// Texture-space diffusion settings for `material`: `gaussians` (1..8) Gaussians fitted to the
+/// shape of its dipole profile (optics::fitGaussians, d'Eon eq. 4.15; weights sum to 1 per
+/// channel, as the separable kernels), the separable method's transmittance table, pre-scatter
+/// albedo; the rest (optimisations, map size) at their defaults. Errors name the material.
+Result<render::TextureSpaceSettings> makeTextureSpaceSettings(const optics::ScatteringMaterial& material,
+                                                              int gaussians);
+
 /// The first layer of data/materials/<name>.json as an optical material.
 Result<optics::ScatteringMaterial> loadDataMaterial(const std::string& name);
 

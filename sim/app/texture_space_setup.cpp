@@ -30,21 +30,13 @@ SurfaceMesh applyAtlas(const std::vector<Float3>& positions, const mesh::UvAtlas
   return out;
 }
 
-double triangleArea(Float3 a, Float3 b, Float3 c) {
-  const double ex = double(b.x - a.x), ey = double(b.y - a.y), ez = double(b.z - a.z);
-  const double fx = double(c.x - a.x), fy = double(c.y - a.y), fz = double(c.z - a.z);
-  return 0.5 * std::hypot(ey * fz - ez * fy, ez * fx - ex * fz, ex * fy - ey * fx);
-}
-
-}  // namespace
-
-Result<TsdOrgan> loadTsdOrgan(const std::filesystem::path& path, float scale) {
+Result<TsdOrgan> loadOrgan(const std::filesystem::path& path, float scale, bool allowAtlas) {
   auto loaded = mesh::loadMesh(path, {.requireUvs = false, .scaleToMm = scale});
   if (!loaded) return loaded.error();
   TsdOrgan organ;
   organ.mesh = std::move(*loaded);
   SurfaceMesh& m = organ.mesh;
-  if (!m.hasUvs() || !mesh::hasUsableUvs(m.uvs, m.triangles, m.positions.size())) {
+  if (allowAtlas && (!m.hasUvs() || !mesh::hasUsableUvs(m.uvs, m.triangles, m.positions.size()))) {
     // No usable UVs: the automatic atlas, computed once on the rest shape.
     const std::vector<Float3> geo = mesh::geometricPositionsOf(m);
     auto atlas = mesh::computeUvAtlas(geo, mesh::geometricTrianglesOf(m));
@@ -59,21 +51,27 @@ Result<TsdOrgan> loadTsdOrgan(const std::filesystem::path& path, float scale) {
   mesh::computeVertexNormals(geo, mesh::geometricTrianglesOf(m), geoNormals);
   gatherToRenderVertices(m, geoNormals, organ.normals);
   organ.tangents.resize(m.positions.size());
-  mesh::computeTangentFrames(m.positions, m.uvs, m.triangles, organ.normals, organ.tangents,
-                             m.geometricIndex);
-  double uv = 0.0, area = 0.0;
-  for (const Triangle& t : m.triangles) {
-    const Float2 a = m.uvs[t[0]], b = m.uvs[t[1]], c = m.uvs[t[2]];
-    uv += 0.5 * std::abs(double(b.x - a.x) * double(c.y - a.y) - double(b.y - a.y) * double(c.x - a.x));
-    area += triangleArea(m.positions[t[0]], m.positions[t[1]], m.positions[t[2]]);
+  if (m.hasUvs()) {
+    mesh::computeTangentFrames(m.positions, m.uvs, m.triangles, organ.normals, organ.tangents,
+                               m.geometricIndex);
+    organ.uvDensity = render::uvDensity(m.positions, m.uvs, m.triangles);
   }
-  organ.uvDensity = area > 0.0 ? float(std::sqrt(uv / area)) : 0.0f;
   organ.lo = organ.hi = m.positions.front();
   for (const Float3& p : m.positions) {
     organ.lo = {std::min(organ.lo.x, p.x), std::min(organ.lo.y, p.y), std::min(organ.lo.z, p.z)};
     organ.hi = {std::max(organ.hi.x, p.x), std::max(organ.hi.y, p.y), std::max(organ.hi.z, p.z)};
   }
   return organ;
+}
+
+}  // namespace
+
+Result<TsdOrgan> loadTsdOrgan(const std::filesystem::path& path, float scale) {
+  return loadOrgan(path, scale, true);
+}
+
+Result<TsdOrgan> loadRenderMesh(const std::filesystem::path& path, float scale) {
+  return loadOrgan(path, scale, false);
 }
 
 Result<std::vector<render::ProfileGaussian>> skinGaussians(int count) {
@@ -126,45 +124,6 @@ render::RadialProfileTable skinProfileTable(const std::vector<render::ProfileGau
     table.value.push_back(render::evaluateGaussianSum(six, table.radiusMm.back()));
   }
   return table;
-}
-
-Result<Image8> referenceImage(render::TextureSpaceRenderer& renderer, const render::Scene& scene, int width,
-                              int height, const render::RadialProfileTable& profile, float cutoffMm,
-                              Float3 offsetMm) {
-  auto maps = renderer.readIrradiance();
-  if (!maps) return maps.error();
-  if (maps->size != maps->maxSize) return Error{"the reference needs the full-size (unoptimised) map"};
-  // Samples: every drawn texel, its surface area |dP/du| |dP/dv| / T^2 (mm^2; the atlas is
-  // conformal, so the two directions are near orthogonal).
-  render::SurfaceSamples samples;
-  std::vector<std::size_t> texel;
-  const double t2 = double(maps->size) * double(maps->size);
-  for (std::size_t t = 0; t < maps->irradiance.texels.size(); ++t) {
-    const Float4 e = maps->irradiance.texels[t], p = maps->position.texels[t], s = maps->stretch.texels[t];
-    if (e.w <= 0.0f) continue;
-    samples.positionMm.push_back({p.x, p.y, p.z});
-    samples.areaMm2.push_back(float(double(s.x) * double(s.y) / t2));
-    samples.irradiance.push_back({e.x, e.y, e.z});
-    texel.push_back(t);
-  }
-  const auto m = render::convolveOverSurface(samples, samples.positionMm, profile, cutoffMm);
-  render::FloatMap diffused{maps->size, maps->size, std::vector<Float4>(maps->irradiance.texels.size())};
-  for (std::size_t i = 0; i < texel.size(); ++i)
-    diffused.texels[texel[i]] = {m[i].x, m[i].y, m[i].z, 1.0f};
-  return renderer.renderWithDiffusedMap(scene, width, height, diffused, offsetMm);
-}
-
-double imageRms(const Image8& a, const Image8& b) {
-  double sum = 0.0;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i + 3 < a.pixels.size() && i + 3 < b.pixels.size(); i += std::size_t(a.channels)) {
-    for (int c = 0; c < 3; ++c) {
-      const double d = double(a.pixels[i + std::size_t(c)]) - double(b.pixels[i + std::size_t(c)]);
-      sum += d * d;
-      ++n;
-    }
-  }
-  return n ? std::sqrt(sum / double(n)) : 0.0;
 }
 
 }  // namespace tissue::sim_app

@@ -2,7 +2,7 @@
 /// \file
 /// What tissue-sim's texture-space commands share: an organ made ready for texture-space
 /// diffusion (its own UVs when usable, else the automatic atlas, computed once), the d'Eon skin
-/// Gaussians, and the accuracy figure against the CPU reference convolution.
+/// Gaussians, and their profile for the CPU reference convolution.
 
 #include <filesystem>
 #include <string>
@@ -11,7 +11,8 @@
 #include "tissue/core/image.h"
 #include "tissue/core/result.h"
 #include "tissue/core/surface_mesh.h"
-#include "tissue/render/texture_space.h"
+#include "tissue/render/renderer.h"
+#include "tissue/render/texture_space_math.h"
 #include "tissue/render/texture_space_reference.h"
 
 namespace tissue::sim_app {
@@ -34,6 +35,9 @@ struct TsdOrgan {
 /// free of overlaps, else mesh::computeUvAtlas on its welded surface.
 Result<TsdOrgan> loadTsdOrgan(const std::filesystem::path& path, float scale);
 
+/// The same without the atlas: the mesh's own UVs (tangent frames from them) or none.
+Result<TsdOrgan> loadRenderMesh(const std::filesystem::path& path, float scale);
+
 /// d'Eon & Luebke's skin profile as `count` Gaussians (2, 4 or 6), from
 /// ../shared/reference/deon_skin_gaussians.tsv: the file's six, or fewer fitted to the six-term
 /// profile by optics::fitGaussians (Jimenez et al. eq. 2).
@@ -41,15 +45,5 @@ Result<std::vector<render::ProfileGaussian>> skinGaussians(int count);
 
 /// The six-term skin profile sampled for the CPU reference, and its cutoff radius (mm).
 render::RadialProfileTable skinProfileTable(const std::vector<render::ProfileGaussian>& six, float& cutoffMm);
-
-/// Renders the CPU reference of the frame just drawn by `renderer` without optimisations: the
-/// exact convolution over the surface of the frame's irradiance (read back) with `profile`,
-/// drawn through the same final pass. Call right after an unoptimised renderImage.
-Result<Image8> referenceImage(render::TextureSpaceRenderer& renderer, const render::Scene& scene, int width,
-                              int height, const render::RadialProfileTable& profile, float cutoffMm,
-                              Float3 offsetMm = {});
-
-/// Root-mean-square difference of the RGB channels, in 8-bit levels.
-double imageRms(const Image8& a, const Image8& b);
 
 }  // namespace tissue::sim_app

@@ -79,7 +79,7 @@ TEST_P(PipelineTest, TimingsListEveryPassInOrder) {
   EXPECT_EQ(renderer->lastTimings().find("separable:blur-x"), nullptr);
 }
 
-TEST_P(PipelineTest, MethodsNotInThisBuildAreErrorsNotFallbacks) {
+TEST_P(PipelineTest, UnknownMeshHandleIsAnError) {
   TISSUE_CONTEXT_OR_SKIP(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
@@ -89,16 +89,7 @@ TEST_P(PipelineTest, MethodsNotInThisBuildAreErrorsNotFallbacks) {
   render::Scene scene = frontScene();
   scene.objects = {object(*mesh)};
   ASSERT_TRUE(renderer->renderImage(scene, kSize, kSize));
-  for (const render::MethodSettings& method : {render::MethodSettings{render::TextureSpaceSettings{}}}) {
-    scene.objects[0].method = method;  // switched at run time, per object
-    auto image = renderer->renderImage(scene, kSize, kSize);
-    ASSERT_FALSE(image);
-    EXPECT_NE(image.error().message.find("not implemented in this build"), std::string::npos)
-        << image.error().message;
-    EXPECT_NE(image.error().message.find(render::shadingMethodName(render::shadingMethod(method))),
-              std::string::npos);
-  }
-  // Unknown handles are errors too.
+  // An object naming a mesh this renderer does not hold is an error, not a skipped object.
   scene.objects[0] = object(render::MeshHandle{999});
   EXPECT_FALSE(renderer->renderImage(scene, kSize, kSize));
 }

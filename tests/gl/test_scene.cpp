@@ -83,6 +83,25 @@ SphereMesh makePatch(float sizeMm, int cells, float zMm) {
   return m;
 }
 
+SphereMesh makeInsetPatch(int n, float sx, float sy, float stretchX) {
+  SphereMesh m;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const float u = float(i) / float(n), v = float(j) / float(n);
+      m.positions.push_back({(u - 0.5f) * sx * stretchX, (v - 0.5f) * sy, 0.0f});
+      m.normals.push_back({0.0f, 0.0f, 1.0f});
+      m.tangents.push_back({1.0f, 0.0f, 0.0f, 1.0f});
+      m.uvs.push_back({0.02f + 0.96f * u, 0.02f + 0.96f * v});
+    }
+  const auto id = [n](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return m;
+}
+
 Image8 makeBumpyNormalMap(int size) {
   return normalMapFromHeight(size, 0.008f, [](float u, float v) {
     return std::sin(2.0f * kPi * 8.0f * u) * std::sin(2.0f * kPi * 5.0f * v) +
@@ -121,6 +140,20 @@ GoldenSphere uploadGoldenSphere(render::Renderer& renderer) {
   const SphereMesh sphere = makeSphere(40.0f, 48, 96);
   return {renderer.createMesh(sphere.arrays()), renderer.createTexture(makeBaseColor(256)),
           renderer.createTexture(makeBumpyNormalMap(256))};
+}
+
+std::vector<render::ProfileGaussian> deonSkinGaussians() {
+  return {{0.0064f, {0.233f, 0.455f, 0.649f}}, {0.0484f, {0.100f, 0.336f, 0.344f}},
+          {0.187f, {0.118f, 0.198f, 0.0f}},    {0.567f, {0.113f, 0.007f, 0.007f}},
+          {1.99f, {0.358f, 0.004f, 0.0f}},     {7.41f, {0.078f, 0.0f, 0.0f}}};
+}
+
+render::TextureSpaceSettings skinTextureSpace(int mapSize, bool optimised) {
+  render::TextureSpaceSettings s;
+  s.gaussians = deonSkinGaussians();
+  s.cull = s.clip = s.depthSize = optimised;
+  s.mapSize = mapSize;
+  return s;
 }
 
 render::Scene goldenScene() {

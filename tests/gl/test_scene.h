@@ -5,6 +5,7 @@
 
 #include "tissue/core/image.h"
 #include "tissue/render/renderer.h"
+#include "tissue/render/texture_space_math.h"
 
 namespace tissue::test {
 
@@ -23,6 +24,10 @@ SphereMesh makeSphere(float radiusMm, int rings, int segments);
 /// A flat square patch of side `sizeMm` centred on (0, 0, zMm), facing +z, `cells` quads a side;
 /// u along +x, v along +y.
 SphereMesh makePatch(float sizeMm, int cells, float zMm);
+
+/// A flat sx x sy mm patch of n x n quads in z = 0 facing +z, its x scaled by `stretchX` (the UVs
+/// are not), uv = (x / sx, y / sy) inset by 2% (texture-space tests: no texel at the map's edge).
+SphereMesh makeInsetPatch(int n, float sx, float sy, float stretchX = 1.0f);
 
 /// A bumpy tangent-space normal map: height sin(2 pi 8 u) sin(2 pi 5 v) + ridges along u, so its
 /// gradient has components along both u and v (so the handedness w matters).
@@ -43,6 +48,14 @@ struct GoldenSphere {
   explicit operator bool() const { return mesh && baseColor && normalMap; }
 };
 GoldenSphere uploadGoldenSphere(render::Renderer& renderer);
+
+/// d'Eon & Luebke's six skin Gaussians (../shared/reference/deon_skin_gaussians.tsv): variances
+/// mm^2 and RGB weights, each channel summing to 1.
+std::vector<render::ProfileGaussian> deonSkinGaussians();
+
+/// Texture-space settings with deonSkinGaussians(), T_max = `mapSize`, the three optimisations on
+/// or off.
+render::TextureSpaceSettings skinTextureSpace(int mapSize, bool optimised);
 
 /// The scene the golden images are rendered with (256 x 256).
 render::Scene goldenScene();

@@ -1,6 +1,8 @@
-// Texture-space diffusion on llvmpipe: golden image, each optimisation against the unoptimised
-// path, energy of a uniformly lit patch, the stretch map of a rest and a stretched patch, the
-// depth-based size and the culled and clipped maps on known geometry.
+// Texture-space diffusion's own model on llvmpipe, through the render pipeline's maps
+// (Renderer::readTextureSpaceMaps): energy of a uniformly lit patch texel by texel, the stretch
+// map of a rest and a stretched patch, the depth-based size and the culled and clipped maps on
+// known geometry. And the standalone TextureSpaceRenderer's golden (it stays for the demo until
+// the demo draws through the pipeline).
 #include <cmath>
 #include <numbers>
 
@@ -17,50 +19,14 @@ using render::TsdSettings;
 
 constexpr int kMapSize = 512;
 
-/// d'Eon & Luebke's skin Gaussians (../shared/reference/deon_skin_gaussians.tsv).
-std::vector<render::ProfileGaussian> deonSkin() {
-  return {{0.0064f, {0.233f, 0.455f, 0.649f}}, {0.0484f, {0.100f, 0.336f, 0.344f}},
-          {0.187f, {0.118f, 0.198f, 0.0f}},    {0.567f, {0.113f, 0.007f, 0.007f}},
-          {1.99f, {0.358f, 0.004f, 0.0f}},     {7.41f, {0.078f, 0.0f, 0.0f}}};
-}
-
-/// Texels per mm of a UV map at `size` texels: sqrt(UV area / surface area) * size.
+/// Texels per mm of a UV map at `size` texels.
 float texelsPerMm(const SphereMesh& m, int size) {
-  double uv = 0.0, area = 0.0;
-  for (const Triangle& t : m.triangles) {
-    const Float2 a = m.uvs[t[0]], b = m.uvs[t[1]], c = m.uvs[t[2]];
-    uv += 0.5 * std::abs(double(b.x - a.x) * double(c.y - a.y) - double(b.y - a.y) * double(c.x - a.x));
-    const Float3 p = m.positions[t[0]], q = m.positions[t[1]], r = m.positions[t[2]];
-    const double ex = q.x - p.x, ey = q.y - p.y, ez = q.z - p.z, fx = r.x - p.x, fy = r.y - p.y,
-                 fz = r.z - p.z;
-    area += 0.5 * std::hypot(ey * fz - ez * fy, ez * fx - ex * fz, ex * fy - ey * fx);
-  }
-  return float(std::sqrt(uv / area)) * float(size);
-}
-
-/// A flat sx x sy mm patch in z = 0 facing +z, uv = (x / sx, y / sy) inset by 2%.
-SphereMesh makePatch(int n, float sx, float sy, float stretchX = 1.0f) {
-  SphereMesh m;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      const float u = float(i) / float(n), v = float(j) / float(n);
-      m.positions.push_back({(u - 0.5f) * sx * stretchX, (v - 0.5f) * sy, 0.0f});
-      m.normals.push_back({0.0f, 0.0f, 1.0f});
-      m.tangents.push_back({1.0f, 0.0f, 0.0f, 1.0f});
-      m.uvs.push_back({0.02f + 0.96f * u, 0.02f + 0.96f * v});
-    }
-  const auto id = [n](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  return m;
+  return render::uvDensity(m.positions, m.uvs, m.triangles) * float(size);
 }
 
 TsdSettings settings(bool optimised) {
   TsdSettings s;
-  s.gaussians = deonSkin();
+  s.gaussians = deonSkinGaussians();
   s.cull = s.clip = s.depthSize = optimised;
   return s;
 }
@@ -68,6 +34,37 @@ TsdSettings settings(bool optimised) {
 struct Fixture {
   std::unique_ptr<context::GlContext> context;
   TextureSpaceRenderer renderer;
+};
+
+// A renderer drawing one mesh with texture-space diffusion, returning its maps.
+class TextureSpaceMapsTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    auto context = createContext(Backend::Egl);
+    if (!context) GTEST_SKIP() << "egl context unavailable: " << context.error().message;
+    m_context = std::move(*context);
+    auto r = render::Renderer::create(m_context->procAddressFunction());
+    ASSERT_TRUE(r) << r.error().message;
+    m_renderer = std::make_unique<render::Renderer>(std::move(*r));
+  }
+  void setMesh(const SphereMesh& mesh) {
+    auto handle = m_renderer->createMesh(mesh.arrays());
+    ASSERT_TRUE(handle) << handle.error().message;
+    m_mesh = *handle;
+  }
+  Result<render::TextureSpaceMaps> renderMaps(render::Scene scene, int width, int height,
+                                              const render::TextureSpaceSettings& settings) {
+    render::SceneObject object;
+    object.mesh = m_mesh;
+    object.method = settings;
+    object.material = scene.material;
+    scene.objects = {object};
+    if (auto image = m_renderer->renderImage(scene, width, height); !image) return image.error();
+    return m_renderer->readTextureSpaceMaps();
+  }
+  std::unique_ptr<context::GlContext> m_context;
+  std::unique_ptr<render::Renderer> m_renderer;
+  render::MeshHandle m_mesh;
 };
 
 class TextureSpaceTest : public ::testing::Test {
@@ -111,22 +108,18 @@ TEST_F(TextureSpaceTest, SphereMatchesGoldenAndOptimisationsStayClose) {
   }
 }
 
-TEST_F(TextureSpaceTest, UniformlyLitPatchKeepsItsMeanBrightness) {
-  const SphereMesh patch = makePatch(40, 60.0f, 60.0f);
-  ASSERT_TRUE(m_renderer->setMesh(patch.arrays(), 0.96f * kMapSize / 60.0f));
+TEST_F(TextureSpaceMapsTest, UniformlyLitPatchKeepsItsMeanBrightness) {
+  setMesh(makeInsetPatch(40, 60.0f, 60.0f));
   render::Scene scene = goldenScene();
   scene.camera.eye = {0.0f, 0.0f, 150.0f};
   scene.lights[0].positionMm = {0.0f, 0.0f, 1e6f};  // N.L = 1 everywhere: uniform irradiance
-  TsdSettings s = settings(false);
-  ASSERT_TRUE(m_renderer->renderImage(scene, 64, 64, s));
-  auto irradiance = m_renderer->readIrradiance();
-  auto diffused = m_renderer->readDiffused(s);
-  ASSERT_TRUE(irradiance && diffused);
+  auto maps = renderMaps(scene, 64, 64, skinTextureSpace(kMapSize, false));
+  ASSERT_TRUE(maps) << maps.error().message;
   double e = 0.0, m = 0.0, worst = 0.0;
   int covered = 0;
-  for (std::size_t t = 0; t < diffused->texels.size(); ++t) {
-    if (irradiance->irradiance.texels[t].w <= 0.0f) continue;
-    const Float4 in = irradiance->irradiance.texels[t], out = diffused->texels[t];
+  for (std::size_t t = 0; t < maps->diffused.pixels.size(); ++t) {
+    if (maps->irradiance.pixels[t].w <= 0.0f) continue;
+    const Float4 in = maps->irradiance.pixels[t], out = maps->diffused.pixels[t];
     e += double(in.x), m += double(out.x), ++covered;
     worst = std::max(worst, std::abs(double(out.x) / double(in.x) - 1.0));
   }
@@ -135,56 +128,53 @@ TEST_F(TextureSpaceTest, UniformlyLitPatchKeepsItsMeanBrightness) {
   EXPECT_LT(worst, 0.01);          // also at the patch's border (normalised convolution)
 }
 
-TEST_F(TextureSpaceTest, StretchMapMatchesRestAndStretchedPatch) {
+TEST_F(TextureSpaceMapsTest, StretchMapMatchesRestAndStretchedPatch) {
   for (float stretchX : {1.0f, 1.5f}) {
-    const SphereMesh patch = makePatch(10, 40.0f, 20.0f, stretchX);
-    ASSERT_TRUE(m_renderer->setMesh(patch.arrays(), 10.0f));
-    render::Scene scene = goldenScene();
-    ASSERT_TRUE(m_renderer->renderImage(scene, 32, 32, settings(false)));
-    auto maps = m_renderer->readIrradiance();
-    ASSERT_TRUE(maps);
+    const SphereMesh patch = makeInsetPatch(10, 40.0f, 20.0f, stretchX);
+    setMesh(patch);
+    auto maps = renderMaps(goldenScene(), 32, 32, skinTextureSpace(kMapSize, false));
+    ASSERT_TRUE(maps) << maps.error().message;
     // mm per UV unit: the 40 x 20 mm patch spans 0.96 of the map each way.
     const double expectU = 40.0 * double(stretchX) / 0.96, expectV = 20.0 / 0.96;
     int checked = 0;
-    for (std::size_t t = 0; t < maps->stretch.texels.size(); ++t) {
-      if (maps->irradiance.texels[t].w <= 0.0f) continue;
-      EXPECT_NEAR(maps->stretch.texels[t].x, expectU, expectU * 2e-3) << t;
-      EXPECT_NEAR(maps->stretch.texels[t].y, expectV, expectV * 2e-3) << t;
+    for (std::size_t t = 0; t < maps->stretch.pixels.size(); ++t) {
+      if (maps->irradiance.pixels[t].w <= 0.0f) continue;
+      EXPECT_NEAR(maps->stretch.pixels[t].x, expectU, expectU * 2e-3) << t;
+      EXPECT_NEAR(maps->stretch.pixels[t].y, expectV, expectV * 2e-3) << t;
       if (++checked > 2000) break;
     }
     EXPECT_GT(checked, 1000);
   }
 }
 
-TEST_F(TextureSpaceTest, DepthSizeCullAndClipOnKnownGeometry) {
+TEST_F(TextureSpaceMapsTest, DepthSizeCullAndClipOnKnownGeometry) {
   const SphereMesh sphere = makeSphere(40.0f, 48, 96);
   const float density = texelsPerMm(sphere, kMapSize);
-  ASSERT_TRUE(m_renderer->setMesh(sphere.arrays(), density));
+  setMesh(sphere);
   render::Scene scene = goldenScene();
   scene.camera.eye = {0.0f, 0.0f, 400.0f};
   scene.camera.farMm = 1000.0f;
   // Depth-based size: eq. 3-4 with d to the nearest corner of [-40, 40]^3 from (0, 0, 400).
-  TsdSettings s = settings(false);
+  render::TextureSpaceSettings s = skinTextureSpace(kMapSize, false);
   s.depthSize = true;
-  ASSERT_TRUE(m_renderer->renderImage(scene, 200, 200, s));
-  auto maps = m_renderer->readIrradiance();
-  ASSERT_TRUE(maps);
-  const float dRef = m_renderer->referenceDistance(scene, 200, s);
+  auto maps = renderMaps(scene, 200, 200, s);
+  ASSERT_TRUE(maps) << maps.error().message;
+  // d_ref: one texel of the full map per pixel, H / (2 tan(fov / 2) texelsPerMm).
+  const float dRef = 200.0f / (2.0f * std::tan(20.0f * std::numbers::pi_v<float> / 180.0f) * density);
   const float d = std::sqrt(360.0f * 360.0f + 2.0f * 40.0f * 40.0f);
   EXPECT_EQ(maps->size, render::irradianceMapSize(render::irradianceMapScale(d, dRef), kMapSize));
   EXPECT_LT(maps->size, kMapSize);
   // Culled: the area within 105 degrees of the view direction, (1 + cos 75 deg... ) = (1 + 0.2588) / 2
   // of a sphere seen from far; from 10 radii a little less.
-  s = settings(false);
+  s = skinTextureSpace(kMapSize, false);
   s.cull = true;
-  ASSERT_TRUE(m_renderer->renderImage(scene, 200, 200, s));
-  maps = m_renderer->readIrradiance();
-  ASSERT_TRUE(maps);
+  maps = renderMaps(scene, 200, 200, s);
+  ASSERT_TRUE(maps) << maps.error().message;
   double visible = 0.0, drawn = 0.0;
-  for (std::size_t t = 0; t < maps->irradiance.texels.size(); ++t) {
-    if (maps->position.texels[t].w <= 0.0f) continue;
+  for (std::size_t t = 0; t < maps->irradiance.pixels.size(); ++t) {
+    if (maps->position.pixels[t].w <= 0.0f) continue;
     drawn += 1.0;
-    visible += maps->irradiance.texels[t].w > 0.0f ? 1.0 : 0.0;
+    visible += maps->irradiance.pixels[t].w > 0.0f ? 1.0 : 0.0;
   }
   // Texels are not equal-area on a UV sphere: weight by the known latitude instead is overkill;
   // the sphere's seen hemisphere plus 15 degrees is between a half and (1 + 0.2588) / 2.
@@ -195,18 +185,16 @@ TEST_F(TextureSpaceTest, DepthSizeCullAndClipOnKnownGeometry) {
   scene.camera.eye = {60.0f, 0.0f, 60.0f};
   scene.camera.target = {60.0f, 0.0f, 0.0f};
   scene.camera.nearMm = 1.0f;
-  ASSERT_TRUE(m_renderer->renderImage(scene, 200, 200, settings(false)));
-  auto positions = m_renderer->readIrradiance();
-  ASSERT_TRUE(positions);
-  s = settings(false);
+  auto positions = renderMaps(scene, 200, 200, skinTextureSpace(kMapSize, false));
+  ASSERT_TRUE(positions) << positions.error().message;
+  s = skinTextureSpace(kMapSize, false);
   s.clip = true;
-  ASSERT_TRUE(m_renderer->renderImage(scene, 200, 200, s));
-  maps = m_renderer->readIrradiance();
-  ASSERT_TRUE(maps);
+  maps = renderMaps(scene, 200, 200, s);
+  ASSERT_TRUE(maps) << maps.error().message;
   int kept = 0, wrong = 0, total = 0;
   const float tanHalf = std::tan(20.0f * std::numbers::pi_v<float> / 180.0f);
-  for (std::size_t t = 0; t < maps->irradiance.texels.size(); ++t) {
-    const Float4 p = positions->position.texels[t];
+  for (std::size_t t = 0; t < maps->irradiance.pixels.size(); ++t) {
+    const Float4 p = positions->position.pixels[t];
     if (p.w <= 0.0f) continue;
     ++total;
     // Eye space of this camera: x = p.x - 60, y = p.y, z = p.z - 60 (looking down -z).
@@ -215,7 +203,7 @@ TEST_F(TextureSpaceTest, DepthSizeCullAndClipOnKnownGeometry) {
         z > 1.0f && std::abs(p.x - 60.0f) <= z * tanHalf * 0.98f && std::abs(p.y) <= z * tanHalf * 0.98f;
     const bool outside =
         z < 0.9f || std::abs(p.x - 60.0f) >= z * tanHalf * 1.02f || std::abs(p.y) >= z * tanHalf * 1.02f;
-    const bool keptHere = maps->irradiance.texels[t].w > 0.0f;
+    const bool keptHere = maps->irradiance.pixels[t].w > 0.0f;
     kept += keptHere;
     wrong += (inside && !keptHere) || (outside && keptHere);
   }

@@ -175,5 +175,14 @@ TEST(TextureSpaceReference, UniformPatchKeepsItsIrradianceAndAPointGivesTheProfi
   EXPECT_NEAR(mc[0].z, 1.0f, 0.05f);
 }
 
+TEST(TextureSpaceMath, UvDensityIsTheSquareRootOfUvAreaOverSurfaceArea) {
+  // A 40 x 10 mm rectangle mapped onto [0, 0.5]^2 (tilted out of z = 0: any orientation works).
+  const std::vector<Float3> p = {{0, 0, 0}, {40, 0, 0}, {40, 6, 8}, {0, 6, 8}};
+  const std::vector<Float2> uv = {{0, 0}, {0.5f, 0}, {0.5f, 0.5f}, {0, 0.5f}};
+  const std::vector<Triangle> t = {{0, 1, 2}, {0, 2, 3}};
+  EXPECT_NEAR(uvDensity(p, uv, t), std::sqrt(0.25f / 400.0f), 1e-6f);
+  EXPECT_EQ(uvDensity(p, uv, {}), 0.0f);  // no area
+}
+
 }  // namespace
 }  // namespace tissue::render

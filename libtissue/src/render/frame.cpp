@@ -174,9 +174,12 @@ Result<void> Renderer::Impl::renderFrame(const Scene& scene, int width, int heig
     });
     if (!r) return r;
   }
-  if (const auto& group = resolved->byMethod[static_cast<std::size_t>(ShadingMethod::Separable)];
-      !group.empty()) {
-    if (auto r = separable.post(frame, group); !r) return r;
+  const auto& separableGroup = resolved->byMethod[static_cast<std::size_t>(ShadingMethod::Separable)];
+  if (!separableGroup.empty()) {
+    if (auto r = separable.post(frame, separableGroup); !r) return r;
+  }
+  if (!resolved->byMethod[static_cast<std::size_t>(ShadingMethod::TextureSpace)].empty()) {
+    if (auto r = textureSpace.post(frame, !separableGroup.empty()); !r) return r;
   }
   // Step 5: HDR composite and tone map into the caller's framebuffer.
   if (auto r = post.composite(frame); !r) return r;

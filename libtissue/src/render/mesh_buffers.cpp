@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <string>
 
+#include "tissue/render/texture_space_math.h"
+
 namespace tissue::render {
 namespace {
 
@@ -69,6 +71,7 @@ Result<void> MeshBuffers::upload(const gl::GlApi& gl, const MeshArrays& mesh) {
   m_indexCount = static_cast<GLsizei>(mesh.triangles.size() * 3);
   m_lo = m_hi = mesh.positions[0];
   grow(mesh.positions);
+  m_uvDensity = render::uvDensity(mesh.positions, mesh.uvs, mesh.triangles);
   return gl::checkGlError(gl, "renderer: mesh upload");
 }
 

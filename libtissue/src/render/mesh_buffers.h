@@ -25,6 +25,8 @@ class MeshBuffers {
   /// Axis-aligned bounds of every position uploaded so far (mm; grows, never shrinks).
   Float3 lo() const { return m_lo; }
   Float3 hi() const { return m_hi; }
+  /// sqrt(UV area / surface area) of the uploaded shape, UV units per mm (texture-space methods).
+  float uvDensity() const { return m_uvDensity; }
 
  private:
   void grow(std::span<const Float3> positions);
@@ -33,6 +35,7 @@ class MeshBuffers {
   std::size_t m_vertexCount = 0;
   GLsizei m_indexCount = 0;
   Float3 m_lo{}, m_hi{};
+  float m_uvDensity = 0.0f;
 };
 
 }  // namespace tissue::render

@@ -214,6 +214,11 @@ Result<FloatImage> Renderer::readFrame(FrameView view) {
   return m_impl->targets.readView(m_impl->gl(), view);
 }
 
+Result<TextureSpaceMaps> Renderer::readTextureSpaceMaps() {
+  StateGuard guard(m_impl->gl());
+  return m_impl->textureSpace.readMaps(m_impl->gl());
+}
+
 const RenderTimings& Renderer::lastTimings() const {
   return m_impl->timings;
 }

@@ -1,5 +1,6 @@
 // tissue-sim render [--mesh FILE] --out IMAGE.png [--method lit|separable|texture-space|raymarch|parallax
-// ...] [--kernel MODEL] [--taps N] [--rank R]: one image of a mesh with one shading method.
+// ...] [--kernel MODEL] [--taps N] [--rank R] [--gaussians N]: one image of a mesh with one shading
+// method, through the render pipeline.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -10,15 +11,11 @@
 #include "command.h"
 #include "output.h"
 #include "raymarch_scene.h"
-#include "render_texture_space.h"
+#include "texture_space_setup.h"
 
 #include "../sss_material.h"
 #include "tissue/context/headless_context.h"
 #include "tissue/core/image.h"
-#include "tissue/mesh/deformable_surface.h"
-#include "tissue/mesh/load_mesh.h"
-#include "tissue/mesh/tangent_frames.h"
-#include "tissue/mesh/vertex_normals.h"
 #include "tissue/render/renderer.h"
 
 namespace tissue::sim_app {
@@ -38,10 +35,12 @@ struct RenderOptions {
   std::string baseColor;
   float scale = 1.0f;  // mm per file unit
   int samples = 4;
-  TsdRenderOptions tsd;      // --method texture-space
-  int marchSamples = 50;     // raymarch: samples per pixel
-  bool adaptive = false;     // raymarch: per-pixel sample count
-  ParallaxOptions parallax;  // --method parallax
+  int gaussians = 6;                                // texture-space: profile terms
+  int mapSize = 1024;                               // texture-space: T_max, texels
+  bool cull = true, clip = true, depthSize = true;  // texture-space: Jimenez et al. §3, §5, §4
+  int marchSamples = 50;                            // raymarch: samples per pixel
+  bool adaptive = false;                            // raymarch: per-pixel sample count
+  ParallaxOptions parallax;                         // --method parallax
 };
 
 Float3 sub(Float3 a, Float3 b) {
@@ -129,42 +128,40 @@ int run(RenderOptions o, const GlobalOptions& global) {
   if (o.method == "raymarch")
     return runRayMarchRender(o.mesh, o.out, o.width, o.height, o.marchSamples, o.adaptive, global);
   if (o.method == "parallax") return renderParallax(o, global);
-  if (o.method == "texture-space") {
-    o.tsd.mesh = o.mesh, o.tsd.out = o.out, o.tsd.baseColor = o.baseColor;
-    o.tsd.width = o.width, o.tsd.height = o.height, o.tsd.scale = o.scale;
-    return renderTextureSpace(o.tsd, global);
-  }
-  if (o.method != "lit" && o.method != "separable") {
+  if (o.method != "lit" && o.method != "separable" && o.method != "texture-space") {
     return fail(cmd, "--method " + o.method + " is not one of lit, separable, texture-space, raymarch");
   }
   render::SceneObject object;
-  if (o.method == "separable") {
+  if (o.method != "lit") {
     if (o.material.empty()) o.material = stem;
     auto optical = loadDataMaterial(o.material);
     if (!optical) return fail(cmd, "--material " + o.material + ": " + optical.error().message);
-    auto separable = makeSeparableMaterial(*optical, o.kernel, o.taps, o.rank);
-    if (!separable)
-      return fail(cmd, "--kernel " + o.kernel + " --taps " + std::to_string(o.taps) + " --rank " +
-                           std::to_string(o.rank) + ": " + separable.error().message);
-    object.method = separable->settings;
+    if (o.method == "separable") {
+      auto separable = makeSeparableMaterial(*optical, o.kernel, o.taps, o.rank);
+      if (!separable)
+        return fail(cmd, "--kernel " + o.kernel + " --taps " + std::to_string(o.taps) + " --rank " +
+                             std::to_string(o.rank) + ": " + separable.error().message);
+      object.method = separable->settings;
+    } else {
+      auto settings = makeTextureSpaceSettings(*optical, o.gaussians);
+      if (!settings)
+        return fail(cmd, "--gaussians " + std::to_string(o.gaussians) + ": " + settings.error().message);
+      settings->mapSize = o.mapSize;
+      settings->cull = o.cull, settings->clip = o.clip, settings->depthSize = o.depthSize;
+      object.method = *settings;
+    }
   }
   // Step 1: the mesh, its angle-weighted normals (per geometric vertex, so seams stay smooth)
   // and UV tangent frames.
-  auto loaded = mesh::loadMesh(o.mesh, {.requireUvs = false, .scaleToMm = o.scale});
+  // Texture space needs unique UVs: the mesh's own when usable, else the automatic atlas (whose
+  // UVs the mesh's textures do not follow).
+  auto loaded = o.method == "texture-space" ? loadTsdOrgan(o.mesh, o.scale) : loadRenderMesh(o.mesh, o.scale);
   if (!loaded) return fail(cmd, loaded.error().message);
-  SurfaceMesh& m = *loaded;
-  std::vector<Float3> geoNormals(m.geometricVertexCount), normals;
-  const std::vector<Float3> geoPositions = mesh::geometricPositionsOf(m);
-  const std::vector<Triangle> geoTriangles = mesh::geometricTrianglesOf(m);
-  mesh::computeVertexNormals(geoPositions, geoTriangles, geoNormals);
-  gatherToRenderVertices(m, geoNormals, normals);
-  std::vector<Float4> tangents(m.positions.size());
-  const bool hasUvs = m.hasUvs();
-  if (hasUvs) {
-    mesh::computeTangentFrames(m.positions, m.uvs, m.triangles, normals, tangents, m.geometricIndex);
-  } else {
-    m.uvs.assign(m.positions.size(), Float2{});  // no UVs: shade with the vertex normals only
-  }
+  SurfaceMesh& m = loaded->mesh;
+  std::vector<Float3>& normals = loaded->normals;
+  std::vector<Float4>& tangents = loaded->tangents;
+  const bool hasUvs = m.hasUvs() && !loaded->atlas;
+  if (!m.hasUvs()) m.uvs.assign(m.positions.size(), Float2{});  // no UVs: shade with the vertex normals only
   // Step 2: a context, the renderer, the mesh and textures.
   auto context = context::createHeadlessContext({}, {.backend = "", .log = false});
   if (!context) return fail(cmd, context.error().message);
@@ -222,9 +219,18 @@ int run(RenderOptions o, const GlobalOptions& global) {
     out["rank"] = o.rank;
     out["material"] = o.material;
   }
+  if (o.method == "texture-space") {
+    out["gaussians"] = o.gaussians;
+    out["map_size"] = o.mapSize;
+    out["cull"] = o.cull, out["clip"] = o.clip, out["depth_size"] = o.depthSize;
+    out["uvs"] =
+        loaded->atlas ? "automatic atlas (" + std::to_string(loaded->charts) + " charts)" : "the mesh's own";
+  }
+  if (o.method != "lit") out["material"] = o.material;
   out["triangles"] = m.triangles.size();
   out["shading"] = hasUvs ? (o.normalMap.empty() ? "vertex normals (no --normal-map)" : "normal-mapped")
-                          : "vertex normals (mesh has no UVs; textures ignored)";
+                   : loaded->atlas ? "vertex normals (automatic UV atlas; the mesh's textures ignored)"
+                                   : "vertex normals (mesh has no UVs; textures ignored)";
   out["normal_map"] = hasUvs ? o.normalMap : "";
   out["base_color"] = hasUvs ? o.baseColor : "";
   printResult(global, out);
@@ -245,7 +251,7 @@ void registerRenderCommand(CLI::App& app, const GlobalOptions& global, int& exit
   cmd->add_option("--rank", opts->rank,
                   "separable kernel components: svd rank or deon Gaussian count, 1..8 (default 1)");
   cmd->add_option("--material", opts->material,
-                  "data/materials/<NAME>.json for separable (default: the mesh's name)");
+                  "data/materials/<NAME>.json for separable and texture-space (default: the mesh's name)");
   cmd->add_option("--out", opts->out, "output PNG (written atomically)")->required();
   cmd->add_option("--width", opts->width, "image width, pixels (default 1024)");
   cmd->add_option("--height", opts->height, "image height, pixels (default 768)");
@@ -253,18 +259,17 @@ void registerRenderCommand(CLI::App& app, const GlobalOptions& global, int& exit
   cmd->add_option("--base-color", opts->baseColor, "base colour PNG, sRGB (needs UVs)");
   cmd->add_option("--scale", opts->scale, "mm per file unit (default 1)");
   cmd->add_option("--samples", opts->samples, "MSAA samples (default 4; 0 = off)");
-  cmd->add_option("--gaussians", opts->tsd.gaussians,
-                  "texture-space: skin profile terms, 2, 4 or 6 (default 6)");
-  cmd->add_option("--map-size", opts->tsd.mapSize,
-                  "texture-space: T_max, irradiance map texels (default 1024)");
+  cmd->add_option("--gaussians", opts->gaussians,
+                  "texture-space: Gaussians fitted to the material's profile, 1..8 (default 6)");
+  cmd->add_option("--map-size", opts->mapSize, "texture-space: T_max, irradiance map texels (default 1024)");
   cmd->add_flag(
-      "--no-cull", [opts](std::int64_t) { opts->tsd.cull = opts->parallax.settings.lightmap.cull = false; },
+      "--no-cull", [opts](std::int64_t) { opts->cull = opts->parallax.settings.lightmap.cull = false; },
       "texture-space and parallax: no culled map");
   cmd->add_flag(
-      "--no-clip", [opts](std::int64_t) { opts->tsd.clip = opts->parallax.settings.lightmap.clip = false; },
+      "--no-clip", [opts](std::int64_t) { opts->clip = opts->parallax.settings.lightmap.clip = false; },
       "texture-space and parallax: no clipped map");
   cmd->add_flag(
-      "--no-depth-size", [opts](std::int64_t) { opts->tsd.depthSize = false; },
+      "--no-depth-size", [opts](std::int64_t) { opts->depthSize = false; },
       "texture-space: no depth-based map size");
   cmd->add_option("--layer-depth", opts->parallax.layerDepthMm,
                   "parallax: inner layer depth, mm (default 1.5)");

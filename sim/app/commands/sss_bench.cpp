@@ -20,6 +20,7 @@ namespace {
 // Every method of the bench, in the order of the results list.
 const SssBenchMethod kMethods[] = {
     {"separable", separableBenchRows},
+    {"texture-space", textureSpaceBenchRows},
 };
 
 struct BenchOptions {

@@ -11,7 +11,9 @@
 /// shading method present (lit, separable:geometry, ...) into linear HDR targets -> resolve
 /// (MSAA only) -> method post passes (separable:resolve with MSAA, separable:blur-x,
 /// separable:blur-y, and separable:blur-x:r / blur-y:r per further kernel component) -> composite (HDR,
-/// RGBA16F) -> tonemap (Reinhard, sRGB8) -> readback (offscreen only).
+/// RGBA16F) -> tonemap (Reinhard, sRGB8) -> readback (offscreen only). Texture-space objects add
+/// texture-space:irradiance, :blur and :final per object in the geometry step, and
+/// texture-space:copy after the blur when no separable object is present.
 
 #include <memory>
 #include <span>
@@ -97,9 +99,12 @@ struct RendererSettings {
 
 /// An intermediate target of the last frame, for inspection and CPU references.
 enum class FrameView {
-  Radiance,        ///< linear HDR radiance without the separable diffuse (RGB; a = 1 where covered)
-  Diffuse,         ///< separable objects' diffuse radiance before the blur (RGB; a = object id, 0 = none)
-  BlurredDiffuse,  ///< the same after both blur passes (RGB; a = object id)
+  Radiance,  ///< linear HDR radiance without the separable diffuse (RGB; a = 1 where covered)
+  /// separable objects' diffuse radiance before the blur, texture-space objects' diffused
+  /// diffuse radiance (RGB; a = object id, 0 = none)
+  Diffuse,
+  BlurredDiffuse,  ///< the same after both blur passes, which leave non-separable ids as they are (RGB; a =
+                   ///< id)
   Position,        ///< world position (xyz, mm) and view depth (w, mm; 0 where nothing was drawn)
 };
 
@@ -109,6 +114,18 @@ struct FloatImage {
   int height = 0;
   std::vector<Float4> pixels;  ///< width * height
   const Float4& at(int x, int y) const { return pixels[static_cast<std::size_t>(y) * width + x]; }
+};
+
+/// The texture-space maps of the last texture-space object drawn: the used T x T texels of each,
+/// rows in increasing v (texel (i, j) at uv = ((i + 0.5) / T, (j + 0.5) / T) / s). For CPU
+/// references of texture-space diffusion's own model.
+struct TextureSpaceMaps {
+  int size = 0;           ///< T, texels
+  int maxSize = 0;        ///< T_max, texels
+  FloatImage irradiance;  ///< rgb albedo^p x irradiance, a = 1 where drawn and not culled
+  FloatImage stretch;   ///< r, g: |dP/du|, |dP/dv|, mm per UV unit; b: sqrt(|dP/du x dP/dv|), mm per UV unit
+  FloatImage position;  ///< xyz world position, mm; w = 1 where drawn (culled and clipped texels too)
+  FloatImage diffused;  ///< rgb sum_i w_i G(v_i) * irradiance (premultiplied by a), a = coverage
 };
 
 /// Draws scenes of deforming objects. Movable, not copyable. Every method needs the renderer's
@@ -164,6 +181,9 @@ class Renderer {
 
   /// Reads an intermediate target of the last frame (float RGBA, rows top to bottom).
   Result<FloatImage> readFrame(FrameView view);
+  /// Reads the texture-space maps of the last texture-space object drawn (a debugging hook for
+  /// CPU references); an Error before any texture-space object was drawn.
+  Result<TextureSpaceMaps> readTextureSpaceMaps();
 
   /// Timings of the last render call.
   const RenderTimings& lastTimings() const;

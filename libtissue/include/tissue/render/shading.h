@@ -12,6 +12,7 @@
 
 #include "tissue/core/types.h"
 #include "tissue/render/handles.h"
+#include "tissue/render/texture_space_math.h"
 
 namespace tissue::render {
 
@@ -63,8 +64,38 @@ inline SeparableSettings rankOneSeparable(std::vector<Float4> taps) {
   return s;
 }
 
-/// Texture-space diffusion (d'Eon et al. 2007). Not in this build: branch `tsd`.
-struct TextureSpaceSettings {};
+/// Texture-space diffusion (d'Eon et al. 2007) with the irradiance-map optimisations of Jimenez
+/// and Gutierrez 2008: the object's irradiance (every light, shadows, transmission, lit as the
+/// separable method lights its diffuse) is rendered into its UV space, blurred by one separable
+/// Gaussian per profile term with a per-frame stretch correction, summed with the profile's
+/// weights and drawn by the camera into the diffuse target (the separable blur leaves it as it
+/// is). The mesh needs unique UVs (mesh::computeUvAtlas makes them).
+struct TextureSpaceSettings {
+  /// The diffusion profile R(r) = sum_i w_i G(v_i, r): variances v_i (mm^2, increasing) and RGB
+  /// weights w_i (unitless; each channel sums to 1 for an energy-conserving profile), 1 to
+  /// kMaxTsdGaussians terms (e.g. optics::fitGaussians of the material's profile).
+  std::vector<ProfileGaussian> gaussians;
+  bool cull = true;       ///< Jimenez §3: no irradiance nor convolution beyond 105 degrees from the eye
+  bool clip = true;       ///< Jimenez §5: clip the irradiance pass to the view frustum (eq. 5-6)
+  bool depthSize = true;  ///< Jimenez §4: map size T = s T_max from the distance (eq. 3-4)
+  float clipD = 1.0f;     ///< D of eq. 5 (1: the exact frustum; more keeps an off-screen margin)
+  /// d_ref of eq. 3, mm: the distance at which the whole map is used. 0: where one texel of the
+  /// full map covers one pixel, d_ref = H / (2 tan(fov / 2) texelsPerMm).
+  float referenceDistanceMm = 0.0f;
+  /// The UV map's density at T_max, texels per mm, for d_ref; 0: measured from the mesh at
+  /// upload, sqrt(UV area / surface area) * mapSize.
+  float texelsPerMm = 0.0f;
+  int mapSize = 1024;    ///< T_max, texels (maps are allocated once per size, shared by objects)
+  int blurHalfTaps = 3;  ///< 2 h + 1 taps per 1D Gaussian pass (d'Eon: 7), 1..8
+  /// Texturing: the map holds albedo^p x irradiance and the camera pass multiplies by
+  /// albedo^(1 - p). 1: pre-scatter, as the separable method (so both diffuse the same
+  /// quantity); 0: post-scatter; 0.5: d'Eon et al.'s mix.
+  float albedoPreScatter = 1.0f;
+  /// Transmittance through thin parts, as SeparableSettings::transmittance: {T_R, T_G, T_B,
+  /// thickness_mm} rows, added to the irradiance before the diffusion; empty = none.
+  std::vector<Float4> transmittance;
+  float transmissionShrinkMm = 0.5f;  ///< mm, as SeparableSettings::transmissionShrinkMm
+};
 /// One layer of a ray-marched material (François et al. 2006, Table 1).
 struct RayMarchLayer {
   Float3 sigma_s{1.0f, 1.0f, 2.0f};  ///< scattering coefficient per RGB channel, mm^-1
@@ -167,10 +198,12 @@ using MethodSettings =
 inline constexpr int kMaxKernelTaps = 64;
 /// The most components (rank) a separable kernel may have; each costs two 1D passes.
 inline constexpr int kMaxKernelComponents = 8;
-/// The most transmittance rows of a separable material.
-inline constexpr int kMaxTransmittanceRows = 16;
 /// The most subsurface maps of a ray-marched material (4 boundaries each; 4N + 1 layers).
 inline constexpr int kMaxSubsurfaceMaps = 2;
+/// The most transmittance rows of a separable or texture-space material.
+inline constexpr int kMaxTransmittanceRows = 16;
+/// The most Gaussians of a texture-space profile.
+inline constexpr int kMaxTsdGaussians = 8;
 
 /// The method an object's settings select.
 inline ShadingMethod shadingMethod(const MethodSettings& settings) {

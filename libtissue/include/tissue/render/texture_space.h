@@ -19,8 +19,9 @@
 
 namespace tissue::render {
 
-/// Per-frame settings of the standalone texture-space renderer (the pipeline's per-object
-/// TextureSpaceSettings in shading.h is still the stub: this renderer is not wired into it yet).
+/// Per-frame settings of the standalone texture-space renderer. Superseded by the pipeline's
+/// texture-space method (TextureSpaceSettings in shading.h); kept only for the demo's frame
+/// until the demo draws through the pipeline, then this header goes.
 struct TsdSettings {
   std::vector<ProfileGaussian> gaussians;  ///< the profile, increasing variances (1..8 terms)
   bool cull = true;                        ///< culled irradiance map (Jimenez §3, 105 degrees)
@@ -31,21 +32,6 @@ struct TsdSettings {
   /// full map covers one pixel: d_ref = H / (2 tan(fov / 2) * texelsPerMm).
   float referenceDistanceMm = 0.0f;
   int blurHalfTaps = 3;  ///< 2 h + 1 taps per 1D Gaussian pass (d'Eon: 7)
-};
-
-/// A float RGBA image, rows bottom to top as GL reads them.
-struct FloatMap {
-  int width = 0, height = 0;
-  std::vector<Float4> texels;  ///< width * height
-};
-
-/// The irradiance-map targets of the last instance drawn, read back (T x T texels).
-struct IrradianceReadback {
-  int size = 0;         ///< T, texels
-  int maxSize = 0;      ///< T_max, texels
-  FloatMap irradiance;  ///< rgb E, a = 1 where the surface is drawn and visible
-  FloatMap stretch;     ///< r, g: |dP/du|, |dP/dv| in mm per UV unit
-  FloatMap position;    ///< xyz world position, mm
 };
 
 /// Creation settings.
@@ -76,17 +62,6 @@ class TextureSpaceRenderer {
   /// rows top to bottom. Each instance runs the whole texture-space chain.
   Result<Image8> renderImage(const Scene& scene, int width, int height, const TsdSettings& settings,
                              std::span<const Float3> instanceOffsetsMm = {});
-  /// The same frame with a given diffused-irradiance map instead of the Gaussian chain (T_max^2
-  /// texels, premultiplied by coverage in a; the map of the unoptimised path, s = 1), one instance
-  /// at `offsetMm`: the image a reference convolution produces, for accuracy figures.
-  Result<Image8> renderWithDiffusedMap(const Scene& scene, int width, int height, const FloatMap& diffused,
-                                       Float3 offsetMm = {});
-  /// The irradiance pass of the last instance rendered, read back (for CPU references).
-  Result<IrradianceReadback> readIrradiance();
-  /// The diffused irradiance sum_i w_i map_i of the last instance (T x T texels, a = coverage).
-  Result<FloatMap> readDiffused(const TsdSettings& settings);
-  /// d_ref (mm) that `settings` gives for an image `height` pixels high with `scene`'s camera.
-  float referenceDistance(const Scene& scene, int height, const TsdSettings& settings) const;
 
  private:
   struct Impl;

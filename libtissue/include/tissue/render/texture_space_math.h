@@ -6,6 +6,7 @@
 /// here on known inputs. Lengths are mm, the map size is texels.
 
 #include <array>
+#include <span>
 #include <vector>
 
 #include "tissue/core/types.h"
@@ -47,6 +48,11 @@ bool insideFrustum(const std::array<Float4, 6>& planes, Float3 p);
 /// \param p   the triangle's corners, mm
 /// \param uv  the corners' texture coordinates
 Float2 uvStretch(const std::array<Float3, 3>& p, const std::array<Float2, 3>& uv);
+
+/// The density of a UV map: sqrt(UV area / surface area), UV units per mm (times the map size:
+/// texels per mm, for d_ref of eq. 3). 0 for a mesh without area.
+float uvDensity(std::span<const Float3> positionsMm, std::span<const Float2> uvs,
+                std::span<const Triangle> triangles);
 
 /// One Gaussian of a sum-of-Gaussians diffusion profile: R(r) = sum_i w_i G(v_i, r),
 /// G(v, r) = exp(-r^2 / (2 v)) / (2 pi v) (d'Eon et al.; Jimenez et al. eq. 2).

@@ -99,4 +99,18 @@ std::vector<BlurTap> gaussianBlurTaps(int halfTaps) {
   return taps;
 }
 
+float uvDensity(std::span<const Float3> positionsMm, std::span<const Float2> uvs,
+                std::span<const Triangle> triangles) {
+  double uv = 0.0, area = 0.0;
+  for (const Triangle& t : triangles) {
+    const Float2 a = uvs[t[0]], b = uvs[t[1]], c = uvs[t[2]];
+    uv += 0.5 * std::abs(double(b.x - a.x) * double(c.y - a.y) - double(b.y - a.y) * double(c.x - a.x));
+    const Float3 p = positionsMm[t[0]], q = positionsMm[t[1]], r = positionsMm[t[2]];
+    const double ex = double(q.x - p.x), ey = double(q.y - p.y), ez = double(q.z - p.z);
+    const double fx = double(r.x - p.x), fy = double(r.y - p.y), fz = double(r.z - p.z);
+    area += 0.5 * std::hypot(ey * fz - ez * fy, ez * fx - ex * fz, ex * fy - ey * fx);
+  }
+  return area > 0.0 ? float(std::sqrt(uv / area)) : 0.0f;
+}
+
 }  // namespace tissue::render

@@ -2,6 +2,7 @@
 #include "texture_space_passes.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -20,8 +21,12 @@ Result<TextureSpaceDiffusion> TextureSpaceDiffusion::create(const gl::GlApi& gl,
   if (!blur) return blur.error();
   auto final = gl::buildProgram(gl, library, {"texture_space/final.vert", "texture_space/final.frag", {}});
   if (!final) return final.error();
+  auto combine =
+      gl::buildProgram(gl, library, {"texture_space/fullscreen.vert", "texture_space/combine.frag", {}});
+  if (!combine) return combine.error();
   tsd.m_blur = std::move(*blur);
   tsd.m_final = std::move(*final);
+  tsd.m_combine = std::move(*combine);
   // The temporary and one map per Gaussian, all T_max^2 RGBA16F.
   const auto target = [&](gl::Texture& texture, gl::Framebuffer& framebuffer) -> Result<void> {
     auto t = createFloatTexture(gl, maxSize, GL_RGBA16F);
@@ -40,8 +45,20 @@ Result<TextureSpaceDiffusion> TextureSpaceDiffusion::create(const gl::GlApi& gl,
   for (int i = 0; i < kMaxTsdGaussians; ++i)
     if (auto r = target(tsd.m_maps[std::size_t(i)], tsd.m_mapFramebuffers[std::size_t(i)]); !r)
       return r.error();
+  // Every blur target shares the irradiance map's visibility depth (culled texels skipped, §3).
+  const auto attachDepth = [&](const gl::Framebuffer& f) {
+    gl.BindFramebuffer(GL_FRAMEBUFFER, f.id());
+    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                               tsd.m_irradiance.visibilityDepth());
+  };
+  attachDepth(tsd.m_tempFramebuffer);
+  for (const gl::Framebuffer& f : tsd.m_mapFramebuffers)
+    attachDepth(f);
   tsd.m_emptyVertexArray = gl::VertexArray::create(gl);
-  // Samplers: final pass base colour on unit 0, maps on units 1..8.
+  // Samplers: final pass base colour on unit 0, maps on units 1..8; combine: maps on 0..7.
+  gl.UseProgram(tsd.m_combine.id());
+  for (int i = 0; i < kMaxTsdGaussians; ++i)
+    gl.Uniform1i(gl.GetUniformLocation(tsd.m_combine.id(), ("u_maps[" + std::to_string(i) + "]").c_str()), i);
   gl.UseProgram(tsd.m_final.id());
   gl.Uniform1i(gl.GetUniformLocation(tsd.m_final.id(), "u_baseColor"), 0);
   for (int i = 0; i < kMaxTsdGaussians; ++i)
@@ -58,10 +75,8 @@ Result<void> TextureSpaceDiffusion::blur(GLuint source, GLuint target, float sig
                                          const TextureSpaceDiffusionSettings& settings) {
   const gl::GlApi& g = *m_gl;
   const GLuint id = m_blur.id();
-  const int size = m_irradiance.size();
   const float scale = m_irradiance.scale();
-  g.BindFramebuffer(GL_FRAMEBUFFER, target);
-  g.Viewport(0, 0, size, size);
+  bindTexels(target, settings.irradiance.cull);
   g.UseProgram(id);
   g.Uniform2f(g.GetUniformLocation(id, "u_direction"), horizontal ? 1.0f : 0.0f, horizontal ? 0.0f : 1.0f);
   g.Uniform1f(g.GetUniformLocation(id, "u_sigmaMm"), sigmaMm);
@@ -92,6 +107,12 @@ Result<void> TextureSpaceDiffusion::diffuse(GLuint vertexArray, GLsizei indexCou
     return Error{"texture space: the profile needs 1 to " + std::to_string(kMaxTsdGaussians) + " Gaussians"};
   if (auto r = m_irradiance.render(vertexArray, indexCount, frame, settings.irradiance, writePositions); !r)
     return r;
+  return convolve(settings);
+}
+
+Result<void> TextureSpaceDiffusion::convolve(const TextureSpaceDiffusionSettings& settings) {
+  if (settings.gaussians.empty() || int(settings.gaussians.size()) > kMaxTsdGaussians)
+    return Error{"texture space: the profile needs 1 to " + std::to_string(kMaxTsdGaussians) + " Gaussians"};
   const gl::GlApi& g = *m_gl;
   g.Disable(GL_DEPTH_TEST);
   g.Disable(GL_CULL_FACE);
@@ -105,7 +126,55 @@ Result<void> TextureSpaceDiffusion::diffuse(GLuint vertexArray, GLsizei indexCou
     if (auto r = blur(m_temp.id(), m_mapFramebuffers[i].id(), sigma, false, settings); !r) return r;
     source = m_maps[i].id();
   }
+  g.Disable(GL_DEPTH_TEST);
   return gl::checkGlError(g, "texture space: convolution");
+}
+
+Result<GLuint> TextureSpaceDiffusion::combine(const TextureSpaceDiffusionSettings& settings) {
+  const gl::GlApi& g = *m_gl;
+  const GLuint id = m_combine.id();
+  std::array<Float3, kMaxTsdGaussians> weights{};
+  for (std::size_t i = 0; i < settings.gaussians.size() && i < weights.size(); ++i)
+    weights[i] = settings.gaussians[i].weight;
+  // The temporary is free once the chain is done: the sum goes there.
+  bindTexels(m_tempFramebuffer.id(), settings.irradiance.cull);
+  g.Disable(GL_CULL_FACE);
+  g.Disable(GL_BLEND);
+  g.UseProgram(id);
+  g.Uniform1f(g.GetUniformLocation(id, "u_mapScale"), m_irradiance.scale());
+  g.Uniform1i(g.GetUniformLocation(id, "u_gaussianCount"), GLint(settings.gaussians.size()));
+  g.Uniform3fv(g.GetUniformLocation(id, "u_weights"), kMaxTsdGaussians, &weights[0].x);
+  for (int i = 0; i < kMaxTsdGaussians; ++i) {
+    g.ActiveTexture(GLenum(GL_TEXTURE0 + i));
+    g.BindTexture(GL_TEXTURE_2D, m_maps[std::size_t(i)].id());
+  }
+  g.ActiveTexture(GL_TEXTURE0);
+  g.BindVertexArray(m_emptyVertexArray.id());
+  g.DrawArrays(GL_TRIANGLES, 0, 3);
+  g.Disable(GL_DEPTH_TEST);
+  if (auto r = gl::checkGlError(g, "texture space: combine"); !r) return r.error();
+  return m_temp.id();
+}
+
+void TextureSpaceDiffusion::bindTexels(GLuint target, bool skipCulled) const {
+  const gl::GlApi& g = *m_gl;
+  const int size = m_irradiance.size();
+  g.BindFramebuffer(GL_FRAMEBUFFER, target);
+  g.Viewport(0, 0, size, size);
+  if (!skipCulled || !m_irradiance.visibilityInDepth()) {
+    g.Disable(GL_DEPTH_TEST);
+    return;
+  }
+  // Culled and empty texels (depth 1) fail GL_GREATER for the full-screen triangle (depth 0.5)
+  // before shading (§3's "convolution skipped where alpha is 0"); they keep the cleared 0.
+  g.Enable(GL_SCISSOR_TEST);
+  g.Scissor(0, 0, size, size);
+  g.ClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  g.Clear(GL_COLOR_BUFFER_BIT);
+  g.Disable(GL_SCISSOR_TEST);
+  g.Enable(GL_DEPTH_TEST);
+  g.DepthFunc(GL_GREATER);
+  g.DepthMask(GL_FALSE);
 }
 
 FinalMaps TextureSpaceDiffusion::chainMaps(const TextureSpaceDiffusionSettings& settings) const {

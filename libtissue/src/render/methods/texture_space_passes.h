@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "irradiance_map.h"
+#include "tissue/render/shading.h"
 
 namespace tissue::render {
 
@@ -17,9 +18,6 @@ struct TextureSpaceDiffusionSettings {
   IrradianceMapSettings irradiance;        ///< the three optimisations
   int blurHalfTaps = 3;                    ///< 2 h + 1 taps per 1D pass (d'Eon: 7)
 };
-
-/// The most Gaussians of a profile.
-inline constexpr int kMaxTsdGaussians = 8;
 
 /// The surface look of the final pass.
 struct TsdSurface {
@@ -48,6 +46,11 @@ class TextureSpaceDiffusion {
   /// Irradiance pass and the Gaussian chain for one object.
   Result<void> diffuse(GLuint vertexArray, GLsizei indexCount, const IrradianceFrame& frame,
                        const TextureSpaceDiffusionSettings& settings, bool writePositions = false);
+  /// The Gaussian chain on the irradiance map as last rendered (irradianceMap().render(...)).
+  Result<void> convolve(const TextureSpaceDiffusionSettings& settings);
+  /// The weighted sum of the chain's maps, sum_i w_i map_i, as one map (premultiplied by
+  /// coverage, the used T x T square); returns its texture, valid until the next convolve.
+  Result<GLuint> combine(const TextureSpaceDiffusionSettings& settings);
   /// The blurred maps of the last diffuse() with the profile's weights, as drawFinal takes them.
   FinalMaps chainMaps(const TextureSpaceDiffusionSettings& settings) const;
   /// Draws the object into the bound framebuffer and viewport (depth test on), its diffuse
@@ -56,10 +59,9 @@ class TextureSpaceDiffusion {
                          const TsdSurface& surface, const FinalMaps& maps);
 
   const IrradianceMap& irradianceMap() const { return m_irradiance; }
-  /// The irradiance blurred by Gaussian i (cumulative variance v_i).
-  GLuint blurred(int i) const { return m_maps[std::size_t(i)].id(); }
-  /// The framebuffer writing blurred map i (for readback).
-  GLuint blurredFramebuffer(int i) const { return m_mapFramebuffers[std::size_t(i)].id(); }
+  IrradianceMap& irradianceMap() { return m_irradiance; }
+  /// The framebuffer holding combine()'s map (for readback).
+  GLuint combinedFramebuffer() const { return m_tempFramebuffer.id(); }
 
   /// Empty (create() makes a usable one).
   TextureSpaceDiffusion() = default;
@@ -67,9 +69,12 @@ class TextureSpaceDiffusion {
  private:
   Result<void> blur(GLuint source, GLuint target, float sigmaMm, bool horizontal,
                     const TextureSpaceDiffusionSettings& settings);
+  // Binds `target` with the used T x T viewport; with `skipCulled` (and the map's visibility in
+  // depth) clears it and sets the depth test that rejects culled and empty texels.
+  void bindTexels(GLuint target, bool skipCulled) const;
   const gl::GlApi* m_gl = nullptr;
   IrradianceMap m_irradiance;
-  gl::Program m_blur, m_final;
+  gl::Program m_blur, m_final, m_combine;
   gl::Texture m_temp;
   gl::Framebuffer m_tempFramebuffer;
   std::vector<gl::Texture> m_maps;

@@ -31,17 +31,6 @@ TextureSpaceDiffusionSettings passSettings(const TsdSettings& s, float reference
   return p;
 }
 
-Result<FloatMap> readTexture(const gl::GlApi& g, GLuint framebuffer, GLenum attachment, int size) {
-  FloatMap map{size, size, std::vector<Float4>(std::size_t(size) * std::size_t(size))};
-  g.BindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
-  g.ReadBuffer(attachment);
-  g.PixelStorei(GL_PACK_ALIGNMENT, 4);
-  g.ReadPixels(0, 0, size, size, GL_RGBA, GL_FLOAT, map.texels.data());
-  g.ReadBuffer(GL_COLOR_ATTACHMENT0);
-  if (auto r = gl::checkGlError(g, "texture space: readback"); !r) return r.error();
-  return map;
-}
-
 }  // namespace
 
 struct TextureSpaceRenderer::Impl {
@@ -49,7 +38,7 @@ struct TextureSpaceRenderer::Impl {
   TextureSpaceRendererSettings settings;
   TextureSpaceDiffusion tsd;
   MeshBuffers mesh;
-  gl::Texture baseColor, referenceMap;
+  gl::Texture baseColor;
   gl::Framebuffer target;
   gl::Renderbuffer color, depth;
   int width = 0, height = 0;
@@ -58,6 +47,14 @@ struct TextureSpaceRenderer::Impl {
   IrradianceFrame lastFrame;
 
   const gl::GlApi& gl() const { return *api; }
+
+  // d_ref (mm): given, or one texel of the full map per pixel (a pixel spans 2 d tan(fov / 2) / H
+  // mm at distance d).
+  float referenceDistance(const Scene& scene, int imageHeight, const TsdSettings& s) const {
+    if (s.referenceDistanceMm > 0.0f) return s.referenceDistanceMm;
+    const float tanHalf = std::tan(glm::radians(scene.camera.verticalFovDeg) * 0.5f);
+    return texelsPerMm > 0.0f ? float(imageHeight) / (2.0f * tanHalf * texelsPerMm) : 0.0f;
+  }
 
   void bounds(std::span<const Float3> p) {
     lo = hi = p.empty() ? Float3{} : p[0];
@@ -197,13 +194,6 @@ Result<void> TextureSpaceRenderer::setBaseColor(const Image8& image) {
   return uploadTexture(m_impl->gl(), m_impl->baseColor, image);
 }
 
-float TextureSpaceRenderer::referenceDistance(const Scene& scene, int height, const TsdSettings& s) const {
-  if (s.referenceDistanceMm > 0.0f) return s.referenceDistanceMm;
-  // One texel of the full map per pixel: a pixel spans 2 d tan(fov / 2) / H mm at distance d.
-  const float tanHalf = std::tan(glm::radians(scene.camera.verticalFovDeg) * 0.5f);
-  return m_impl->texelsPerMm > 0.0f ? float(height) / (2.0f * tanHalf * m_impl->texelsPerMm) : 0.0f;
-}
-
 Result<Image8> TextureSpaceRenderer::renderImage(const Scene& scene, int width, int height,
                                                  const TsdSettings& settings,
                                                  std::span<const Float3> instanceOffsetsMm) {
@@ -213,7 +203,7 @@ Result<Image8> TextureSpaceRenderer::renderImage(const Scene& scene, int width, 
   StateGuard guard(g);
   if (auto r = s.ensureTarget(width, height); !r) return r.error();
   const float aspect = float(width) / float(height);
-  const auto pass = passSettings(settings, referenceDistance(scene, height, settings));
+  const auto pass = passSettings(settings, s.referenceDistance(scene, height, settings));
   const TsdSurface surface = s.surfaceOf(scene, aspect);
   s.clearTarget(scene);
   const Float3 origin{};
@@ -232,64 +222,6 @@ Result<Image8> TextureSpaceRenderer::renderImage(const Scene& scene, int width, 
       return r.error();
   }
   return s.readImage();
-}
-
-Result<Image8> TextureSpaceRenderer::renderWithDiffusedMap(const Scene& scene, int width, int height,
-                                                           const FloatMap& diffused, Float3 offsetMm) {
-  Impl& s = *m_impl;
-  const gl::GlApi& g = s.gl();
-  const int maxSize = s.tsd.irradianceMap().maxSize();
-  if (s.mesh.empty()) return Error{"texture space: no mesh; call setMesh first"};
-  if (diffused.width != maxSize || diffused.height != maxSize)
-    return Error{"texture space: the diffused map must be " + std::to_string(maxSize) + " texels square"};
-  StateGuard guard(g);
-  if (auto r = s.ensureTarget(width, height); !r) return r.error();
-  auto texture = createFloatTexture(g, maxSize, GL_RGBA32F);
-  if (!texture) return texture.error();
-  s.referenceMap = std::move(*texture);
-  g.TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, maxSize, maxSize, GL_RGBA, GL_FLOAT, diffused.texels.data());
-  const float aspect = float(width) / float(height);
-  s.clearTarget(scene);
-  FinalMaps maps{{s.referenceMap.id()}, {Float3{1.0f, 1.0f, 1.0f}}, 1.0f};
-  const IrradianceFrame frame = s.frameOf(scene, aspect, offsetMm);
-  if (auto r =
-          s.tsd.drawFinal(s.mesh.vertexArray(), s.mesh.indexCount(), frame, s.surfaceOf(scene, aspect), maps);
-      !r)
-    return r.error();
-  return s.readImage();
-}
-
-Result<IrradianceReadback> TextureSpaceRenderer::readIrradiance() {
-  const gl::GlApi& g = m_impl->gl();
-  StateGuard guard(g);
-  const IrradianceMap& map = m_impl->tsd.irradianceMap();
-  IrradianceReadback out;
-  out.size = map.size();
-  out.maxSize = map.maxSize();
-  auto e = readTexture(g, map.framebuffer(), GL_COLOR_ATTACHMENT0, out.size);
-  auto st = readTexture(g, map.framebuffer(), GL_COLOR_ATTACHMENT1, out.size);
-  auto p = readTexture(g, map.framebuffer(), GL_COLOR_ATTACHMENT2, out.size);
-  if (!e || !st || !p) return Error{"texture space: cannot read the irradiance maps back"};
-  out.irradiance = std::move(*e), out.stretch = std::move(*st), out.position = std::move(*p);
-  return out;
-}
-
-Result<FloatMap> TextureSpaceRenderer::readDiffused(const TsdSettings& settings) {
-  const gl::GlApi& g = m_impl->gl();
-  StateGuard guard(g);
-  const int size = m_impl->tsd.irradianceMap().size();
-  FloatMap sum{size, size, std::vector<Float4>(std::size_t(size) * std::size_t(size))};
-  for (std::size_t i = 0; i < settings.gaussians.size(); ++i) {
-    auto map = readTexture(g, m_impl->tsd.blurredFramebuffer(int(i)), GL_COLOR_ATTACHMENT0, size);
-    if (!map) return map.error();
-    const Float3 w = settings.gaussians[i].weight;
-    for (std::size_t t = 0; t < sum.texels.size(); ++t) {
-      const Float4 m = map->texels[t];
-      sum.texels[t] = {sum.texels[t].x + w.x * m.x, sum.texels[t].y + w.y * m.y, sum.texels[t].z + w.z * m.z,
-                       m.w};
-    }
-  }
-  return sum;
 }
 
 }  // namespace tissue::render
