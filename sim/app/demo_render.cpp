@@ -128,8 +128,8 @@ void addReferenceError(render::Renderer& renderer, const render::FloatImage& dif
 }  // namespace
 
 nlohmann::json DemoRenderer::renderSubsurface(const mesh::DeformableSurface& surface,
-                                              const LayeredMaterial& material, const std::filesystem::path& png,
-                                              bool textureSpace) {
+                                              const LayeredMaterial& material,
+                                              const std::filesystem::path& png, bool textureSpace) {
   auto& s = *m_impl;
   auto fail = [](const std::string& why) { return nlohmann::json{{"skipped", why}}; };
   // Step 1: both methods' settings from the material's first layer (its dipole profile).
@@ -140,7 +140,8 @@ nlohmann::json DemoRenderer::renderSubsurface(const mesh::DeformableSurface& sur
   auto tsd = makeTextureSpaceSettings(*optical, 6);
   if (!tsd) return fail(tsd.error().message);
   if (textureSpace && !mesh::hasUsableUvs(surface.uvs(), surface.triangles(), surface.positions().size()))
-    return fail("texture-space diffusion needs unique UVs and the organ's overlap (see mesh::computeUvAtlas)");
+    return fail(
+        "texture-space diffusion needs unique UVs and the organ's overlap (see mesh::computeUvAtlas)");
   // Step 2: the organ as it is now, separable, lit by a shadow-casting lamp (shadows and
   // transmission); its pre-blur diffuse is the reference's input for both methods.
   if (auto lit = render(surface, material, png); !lit) return fail(lit.error().message);
@@ -172,7 +173,8 @@ nlohmann::json DemoRenderer::renderSubsurface(const mesh::DeformableSurface& sur
 }
 
 nlohmann::json DemoRenderer::renderParallax(const mesh::DeformableSurface& surface,
-                                            const LayeredMaterial& material, const std::filesystem::path& png) {
+                                            const LayeredMaterial& material,
+                                            const std::filesystem::path& png) {
   auto& s = *m_impl;
   auto fail = [](const std::string& why) { return nlohmann::json{{"skipped", why}}; };
   // Step 1: the organ as it is now (uploads the deformation), then its inner layer's textures.

@@ -132,8 +132,9 @@ TEST_P(TextureSpacePipelineTest, LightsTheSurfaceAsTheSeparableMethodDoes) {
   render::FloatImage views[2];
   for (int i = 0; i < 2; ++i) {
     scene.objects = {objectOf(sphere,
-                              i == 0 ? render::MethodSettings{render::rankOneSeparable(gaussianTaps(2.0f, 17))}
-                                     : render::MethodSettings{identity()},
+                              i == 0
+                                  ? render::MethodSettings{render::rankOneSeparable(gaussianTaps(2.0f, 17))}
+                                  : render::MethodSettings{identity()},
                               scene.material)};
     ASSERT_TRUE(renderer->renderImage(scene, kSize, kSize));
     auto diffuse = renderer->readFrame(render::FrameView::Diffuse);
@@ -205,8 +206,9 @@ TEST_P(TextureSpacePipelineTest, SeparableAndTextureSpaceObjectsSideBySide) {
 
 TEST_P(TextureSpacePipelineTest, OneObjectSwitchesMethodAtRunTime) {
   TISSUE_CONTEXT_OR_SKIP(context, GetParam());
-  const std::vector<render::MethodSettings> methods = {
-      render::LitSettings{}, render::rankOneSeparable(gaussianTaps(2.0f, 17)), skinTextureSpace(kMapSize, true)};
+  const std::vector<render::MethodSettings> methods = {render::LitSettings{},
+                                                       render::rankOneSeparable(gaussianTaps(2.0f, 17)),
+                                                       skinTextureSpace(kMapSize, true)};
   const char* passes[] = {"lit", "separable:blur-y", "texture-space:final"};
   render::Scene scene = goldenScene();
   // Each method's image from a renderer that only ever drew that method.

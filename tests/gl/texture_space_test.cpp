@@ -1,21 +1,17 @@
 // Texture-space diffusion's own model on llvmpipe, through the render pipeline's maps
 // (Renderer::readTextureSpaceMaps): energy of a uniformly lit patch texel by texel, the stretch
 // map of a rest and a stretched patch, the depth-based size and the culled and clipped maps on
-// known geometry. And the standalone TextureSpaceRenderer's golden (it stays for the demo until
-// the demo draws through the pipeline).
+// known geometry. (The method's golden and optimisation tolerances are in
+// texture_space_pipeline_test.cpp.)
 #include <cmath>
 #include <numbers>
 
 #include "gl_test_support.h"
 #include "image_compare.h"
 #include "test_scene.h"
-#include "tissue/render/texture_space.h"
 
 namespace tissue::test {
 namespace {
-
-using render::TextureSpaceRenderer;
-using render::TsdSettings;
 
 constexpr int kMapSize = 512;
 
@@ -23,18 +19,6 @@ constexpr int kMapSize = 512;
 float texelsPerMm(const SphereMesh& m, int size) {
   return render::uvDensity(m.positions, m.uvs, m.triangles) * float(size);
 }
-
-TsdSettings settings(bool optimised) {
-  TsdSettings s;
-  s.gaussians = deonSkinGaussians();
-  s.cull = s.clip = s.depthSize = optimised;
-  return s;
-}
-
-struct Fixture {
-  std::unique_ptr<context::GlContext> context;
-  TextureSpaceRenderer renderer;
-};
 
 // A renderer drawing one mesh with texture-space diffusion, returning its maps.
 class TextureSpaceMapsTest : public ::testing::Test {
@@ -66,47 +50,6 @@ class TextureSpaceMapsTest : public ::testing::Test {
   std::unique_ptr<render::Renderer> m_renderer;
   render::MeshHandle m_mesh;
 };
-
-class TextureSpaceTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    auto context = createContext(Backend::Egl);
-    if (!context) GTEST_SKIP() << "egl context unavailable: " << context.error().message;
-    m_context = std::move(*context);
-    render::TextureSpaceRendererSettings rs;
-    rs.maxMapSize = kMapSize;
-    auto r = TextureSpaceRenderer::create(m_context->procAddressFunction(), rs);
-    ASSERT_TRUE(r) << r.error().message;
-    m_renderer = std::make_unique<TextureSpaceRenderer>(std::move(*r));
-  }
-  std::unique_ptr<context::GlContext> m_context;
-  std::unique_ptr<TextureSpaceRenderer> m_renderer;
-};
-
-TEST_F(TextureSpaceTest, SphereMatchesGoldenAndOptimisationsStayClose) {
-  const SphereMesh sphere = makeSphere(40.0f, 48, 96);
-  ASSERT_TRUE(m_renderer->setMesh(sphere.arrays(), texelsPerMm(sphere, kMapSize)));
-  ASSERT_TRUE(m_renderer->setBaseColor(makeBaseColor(256)));
-  const render::Scene scene = goldenScene();
-  auto plain = m_renderer->renderImage(scene, 256, 256, settings(false));
-  ASSERT_TRUE(plain) << plain.error().message;
-  const std::string failure = checkGolden("texture_space_sphere", *plain);
-  EXPECT_TRUE(failure.empty()) << failure;
-  // Each optimisation alone and all three, against the unoptimised image: mean difference under
-  // 1 level and under 1% of pixels off by more than 8 levels (the culled border and the smaller
-  // map move the diffusion a little at silhouettes).
-  for (int which = 0; which < 4; ++which) {
-    TsdSettings s = settings(false);
-    s.cull = which == 0 || which == 3;
-    s.clip = which == 1 || which == 3;
-    s.depthSize = which == 2 || which == 3;
-    auto image = m_renderer->renderImage(scene, 256, 256, s);
-    ASSERT_TRUE(image) << image.error().message;
-    const ImageDiff d = compareImages(*image, *plain, 8);
-    EXPECT_LT(d.meanDiff, 1.0) << "optimisation " << which;
-    EXPECT_LT(d.fractionOver, 0.01) << "optimisation " << which;
-  }
-}
 
 TEST_F(TextureSpaceMapsTest, UniformlyLitPatchKeepsItsMeanBrightness) {
   setMesh(makeInsetPatch(40, 60.0f, 60.0f));

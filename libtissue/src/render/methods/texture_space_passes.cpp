@@ -1,4 +1,4 @@
-// Texture-space diffusion: the Gaussian chain and the final pass (d'Eon et al. 2007).
+// Texture-space diffusion: the Gaussian chain and the combined map (d'Eon et al. 2007).
 #include "texture_space_passes.h"
 
 #include <algorithm>
@@ -19,13 +19,10 @@ Result<TextureSpaceDiffusion> TextureSpaceDiffusion::create(const gl::GlApi& gl,
   tsd.m_irradiance = std::move(*irradiance);
   auto blur = gl::buildProgram(gl, library, {"texture_space/fullscreen.vert", "texture_space/blur.frag", {}});
   if (!blur) return blur.error();
-  auto final = gl::buildProgram(gl, library, {"texture_space/final.vert", "texture_space/final.frag", {}});
-  if (!final) return final.error();
   auto combine =
       gl::buildProgram(gl, library, {"texture_space/fullscreen.vert", "texture_space/combine.frag", {}});
   if (!combine) return combine.error();
   tsd.m_blur = std::move(*blur);
-  tsd.m_final = std::move(*final);
   tsd.m_combine = std::move(*combine);
   // The temporary and one map per Gaussian, all T_max^2 RGBA16F.
   const auto target = [&](gl::Texture& texture, gl::Framebuffer& framebuffer) -> Result<void> {
@@ -55,15 +52,10 @@ Result<TextureSpaceDiffusion> TextureSpaceDiffusion::create(const gl::GlApi& gl,
   for (const gl::Framebuffer& f : tsd.m_mapFramebuffers)
     attachDepth(f);
   tsd.m_emptyVertexArray = gl::VertexArray::create(gl);
-  // Samplers: final pass base colour on unit 0, maps on units 1..8; combine: maps on 0..7.
+  // Samplers: combine reads the maps on units 0..7.
   gl.UseProgram(tsd.m_combine.id());
   for (int i = 0; i < kMaxTsdGaussians; ++i)
     gl.Uniform1i(gl.GetUniformLocation(tsd.m_combine.id(), ("u_maps[" + std::to_string(i) + "]").c_str()), i);
-  gl.UseProgram(tsd.m_final.id());
-  gl.Uniform1i(gl.GetUniformLocation(tsd.m_final.id(), "u_baseColor"), 0);
-  for (int i = 0; i < kMaxTsdGaussians; ++i)
-    gl.Uniform1i(gl.GetUniformLocation(tsd.m_final.id(), ("u_maps[" + std::to_string(i) + "]").c_str()),
-                 i + 1);
   gl.UseProgram(tsd.m_blur.id());
   gl.Uniform1i(gl.GetUniformLocation(tsd.m_blur.id(), "u_source"), 0);
   gl.Uniform1i(gl.GetUniformLocation(tsd.m_blur.id(), "u_stretch"), 1);
@@ -175,59 +167,6 @@ void TextureSpaceDiffusion::bindTexels(GLuint target, bool skipCulled) const {
   g.Enable(GL_DEPTH_TEST);
   g.DepthFunc(GL_GREATER);
   g.DepthMask(GL_FALSE);
-}
-
-FinalMaps TextureSpaceDiffusion::chainMaps(const TextureSpaceDiffusionSettings& settings) const {
-  FinalMaps out;
-  out.scale = m_irradiance.scale();
-  for (std::size_t i = 0; i < settings.gaussians.size() && i < m_maps.size(); ++i) {
-    out.maps.push_back(m_maps[i].id());
-    out.weights.push_back(settings.gaussians[i].weight);
-  }
-  return out;
-}
-
-Result<void> TextureSpaceDiffusion::drawFinal(GLuint vertexArray, GLsizei indexCount,
-                                              const IrradianceFrame& frame, const TsdSurface& surface,
-                                              const FinalMaps& maps) {
-  const gl::GlApi& g = *m_gl;
-  const GLuint id = m_final.id();
-  if (maps.maps.empty() || maps.maps.size() > std::size_t(kMaxTsdGaussians) ||
-      maps.weights.size() != maps.maps.size())
-    return Error{"texture space: the final pass needs 1 to 8 maps with one weight each"};
-  g.Enable(GL_DEPTH_TEST);
-  g.DepthFunc(GL_LESS);
-  g.DepthMask(GL_TRUE);
-  g.Enable(GL_CULL_FACE);
-  g.CullFace(GL_BACK);
-  g.FrontFace(GL_CCW);
-  g.UseProgram(id);
-  g.UniformMatrix4fv(g.GetUniformLocation(id, "u_viewProjection"), 1, GL_FALSE,
-                     surface.viewProjection.data());
-  g.Uniform1f(g.GetUniformLocation(id, "u_mapScale"), maps.scale);
-  g.Uniform3f(g.GetUniformLocation(id, "u_offset"), frame.offsetMm.x, frame.offsetMm.y, frame.offsetMm.z);
-  g.Uniform3f(g.GetUniformLocation(id, "u_cameraPosition"), surface.cameraPosition.x,
-              surface.cameraPosition.y, surface.cameraPosition.z);
-  g.Uniform3f(g.GetUniformLocation(id, "u_lightPosition"), frame.lightPosition.x, frame.lightPosition.y,
-              frame.lightPosition.z);
-  g.Uniform3f(g.GetUniformLocation(id, "u_lightRadiance"), frame.lightRadiance.x, frame.lightRadiance.y,
-              frame.lightRadiance.z);
-  g.Uniform1f(g.GetUniformLocation(id, "u_specular"), surface.specular);
-  g.Uniform1f(g.GetUniformLocation(id, "u_shininess"), surface.shininess);
-  g.Uniform1f(g.GetUniformLocation(id, "u_exposure"), surface.exposure);
-  g.Uniform1i(g.GetUniformLocation(id, "u_output"), surface.linearDiffuse ? 1 : 0);
-  g.Uniform1i(g.GetUniformLocation(id, "u_gaussianCount"), GLint(maps.maps.size()));
-  g.Uniform3fv(g.GetUniformLocation(id, "u_weights"), GLsizei(maps.weights.size()), &maps.weights[0].x);
-  g.ActiveTexture(GL_TEXTURE0);
-  g.BindTexture(GL_TEXTURE_2D, surface.baseColor);
-  for (std::size_t i = 0; i < std::size_t(kMaxTsdGaussians); ++i) {
-    g.ActiveTexture(GLenum(GL_TEXTURE1 + i));
-    g.BindTexture(GL_TEXTURE_2D, i < maps.maps.size() ? maps.maps[i] : 0);
-  }
-  g.ActiveTexture(GL_TEXTURE0);
-  g.BindVertexArray(vertexArray);
-  g.DrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
-  return gl::checkGlError(g, "texture space: final pass");
 }
 
 }  // namespace tissue::render

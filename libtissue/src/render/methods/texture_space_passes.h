@@ -1,8 +1,8 @@
 #pragma once
 // Texture-space diffusion's GL passes for one object (d'Eon et al. 2007, Jimenez et al. 2008):
 // the irradiance map (IrradianceMap), one separable Gaussian per profile term, each blurring the
-// previous result by the variance it adds (G(v1) * G(v2) = G(v1 + v2)), and the final pass that
-// sums the blurred maps with the profile's weights. Objects are processed one after another and
+// previous result by the variance it adds (G(v1) * G(v2) = G(v1 + v2)), and the combine pass that
+// sums the blurred maps with the profile's weights into one map. Objects are processed one after another and
 // share the maps. State is set, not restored.
 #include <memory>
 #include <vector>
@@ -19,24 +19,6 @@ struct TextureSpaceDiffusionSettings {
   int blurHalfTaps = 3;                    ///< 2 h + 1 taps per 1D pass (d'Eon: 7)
 };
 
-/// The surface look of the final pass.
-struct TsdSurface {
-  Mat4 viewProjection{};       ///< world (mm) to clip, column-major
-  Float3 cameraPosition;       ///< mm
-  float specular = 0.04f;      ///< unitless
-  float shininess = 64.0f;     ///< Blinn-Phong exponent
-  float exposure = 1.0f;       ///< unitless
-  GLuint baseColor = 0;        ///< sRGB albedo texture
-  bool linearDiffuse = false;  ///< write the linear diffused irradiance (no albedo) instead of colour
-};
-
-/// What the final pass sums: maps (premultiplied by coverage) and their RGB weights.
-struct FinalMaps {
-  std::vector<GLuint> maps;     ///< textures, at most kMaxTsdGaussians
-  std::vector<Float3> weights;  ///< unitless, one per map
-  float scale = 1.0f;           ///< s of eq. 3: the maps' used part is [0, s]^2
-};
-
 /// The maps and programs, created once for a maximum map size and reused by every object.
 class TextureSpaceDiffusion {
  public:
@@ -51,12 +33,6 @@ class TextureSpaceDiffusion {
   /// The weighted sum of the chain's maps, sum_i w_i map_i, as one map (premultiplied by
   /// coverage, the used T x T square); returns its texture, valid until the next convolve.
   Result<GLuint> combine(const TextureSpaceDiffusionSettings& settings);
-  /// The blurred maps of the last diffuse() with the profile's weights, as drawFinal takes them.
-  FinalMaps chainMaps(const TextureSpaceDiffusionSettings& settings) const;
-  /// Draws the object into the bound framebuffer and viewport (depth test on), its diffuse
-  /// radiance the weighted sum of `maps`.
-  Result<void> drawFinal(GLuint vertexArray, GLsizei indexCount, const IrradianceFrame& frame,
-                         const TsdSurface& surface, const FinalMaps& maps);
 
   const IrradianceMap& irradianceMap() const { return m_irradiance; }
   IrradianceMap& irradianceMap() { return m_irradiance; }
@@ -74,7 +50,7 @@ class TextureSpaceDiffusion {
   void bindTexels(GLuint target, bool skipCulled) const;
   const gl::GlApi* m_gl = nullptr;
   IrradianceMap m_irradiance;
-  gl::Program m_blur, m_final, m_combine;
+  gl::Program m_blur, m_combine;
   gl::Texture m_temp;
   gl::Framebuffer m_tempFramebuffer;
   std::vector<gl::Texture> m_maps;
