@@ -105,6 +105,7 @@ void Window::onKey(GLFWwindow* window, int key, int /*scancode*/, int action, in
   if (key == GLFW_KEY_ESCAPE) pending.quit = true;
   if (key == GLFW_KEY_R) pending.reset = true;
   if (key == GLFW_KEY_N) pending.toggleNormalMap = true;
+  if (key == GLFW_KEY_M) pending.cycleMethod = true;
 }
 
 }  // namespace tissue::viewer

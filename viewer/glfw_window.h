@@ -26,6 +26,7 @@ struct InputFrame {
   bool quit = false;             ///< Esc or the window's close button
   bool reset = false;            ///< R
   bool toggleNormalMap = false;  ///< N
+  bool cycleMethod = false;      ///< M: the next shading method
 };
 
 /// A window with a current GL 3.3 core context. Not copyable or movable (GLFW keeps a pointer).

@@ -1,5 +1,5 @@
 // tissue-viewer: the interactive viewer. Orbit (left drag), zoom (scroll), poke (right button);
-// Esc quits, R resets, N toggles normal mapping.
+// Esc quits, R resets, N toggles normal mapping, M switches the shading method.
 #include <CLI/CLI.hpp>
 #include <cstdlib>
 #include <exception>
@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
 
   CLI::App app{
       "tissue-viewer: orbit (left drag), zoom (scroll) and poke (right button) a deforming organ. "
-      "Keys: Esc quits, R resets, N toggles normal mapping."};
+      "Keys: Esc quits, R resets, N toggles normal mapping, M switches the shading method."};
   app.add_option("--mesh", options.mesh, "mesh file with UVs (OBJ, PLY, OFF, STL; mm)");
   app.add_option("--width", options.width, "window width, pixels")->check(CLI::Range(16, 8192));
   app.add_option("--height", options.height, "window height, pixels")->check(CLI::Range(16, 8192));
@@ -34,6 +34,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0L, 1000000000L));
   app.add_option("--screenshot", options.screenshot, "write the last frame (offscreen, window size) as PNG");
   app.add_flag("--poke-script", options.pokeScript, "poke the top of the organ automatically (no mouse)");
+  app.add_option("--method", options.method,
+                 "shading method at start: lit, separable, texture-space or parallax (M cycles; default lit)")
+      ->check(CLI::IsMember({"lit", "separable", "texture-space", "parallax"}));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -58,7 +58,23 @@ Result<OrganAssets> loadOrganAssets(const std::filesystem::path& meshFile, const
   if (!baseColor) return baseColor.error();
   auto normalMap = findTexture(folders, stem, "normal_map");
   if (!normalMap) return normalMap.error();
-  return OrganAssets{std::move(*surface), std::move(*baseColor), std::move(*normalMap), *sigmaT};
+  auto innerBase = findTexture(folders, stem, "inner_base");
+  if (!innerBase) return innerBase.error();
+  auto opacity = findTexture(folders, stem, "opacity");
+  if (!opacity) return opacity.error();
+  std::optional<optics::ScatteringMaterial> material;
+  if (const auto file = folders.data / "materials" / (stem + ".json"); std::filesystem::exists(file)) {
+    auto m = optics::loadTissueMaterial(file);
+    if (!m) return Error{file.string() + ": " + m.error().message};
+    material = std::move(*m);
+  }
+  return OrganAssets{std::move(*surface),
+                     std::move(*baseColor),
+                     std::move(*normalMap),
+                     std::move(*innerBase),
+                     std::move(*opacity),
+                     std::move(material),
+                     *sigmaT};
 }
 
 }  // namespace tissue::viewer

@@ -12,6 +12,7 @@
 #include "glfw_window.h"
 #include "instrument_poke.h"
 #include "orbit_camera.h"
+#include "organ_methods.h"
 #include "poke_script.h"
 #include "ray_pick.h"
 #include "tissue/render/renderer.h"
@@ -43,7 +44,11 @@ struct Session {
   std::optional<render::Renderer> renderer;
   std::optional<OrbitCamera> orbit;
   std::optional<InstrumentPoke> poke;
-  render::Scene scene;
+  render::Scene scene;  ///< one object: the organ
+  render::MeshHandle mesh;
+  render::TextureHandle normalMap;              ///< none: the organ has no normal map
+  std::vector<render::MethodSettings> methods;  ///< what M cycles through (organMethods)
+  std::size_t method = 0;                       ///< the organ's method now, an index into methods
   bool normalMapping = true;
   bool scriptHeld = false;
   MeshBreakdown meshBreakdown;
@@ -59,20 +64,53 @@ void updateScene(Session& s) {
   s.scene.lights[0].positionMm = s.scene.camera.eye + right * (0.5f * d) + up * (0.7f * d);
 }
 
-/// Creates the renderer on the window's context and uploads the organ and its textures.
-Result<void> setUpRendering(Session& s) {
+/// Uploads `image` when present; none otherwise.
+Result<render::TextureHandle> upload(render::Renderer& renderer, const std::optional<Image8>& image) {
+  if (!image) return render::TextureHandle{};
+  return renderer.createTexture(*image);
+}
+
+/// Shows the organ with methods[method]; shadow maps when it scatters (the transmission of the
+/// separable and texture-space methods reads them).
+void applyMethod(Session& s) {
+  render::SceneObject& organ = s.scene.objects[0];
+  organ.method = s.methods[s.method];
+  organ.normalMap = s.normalMapping ? s.normalMap : render::TextureHandle{};
+  s.scene.lights[0].castsShadows = render::shadingMethod(organ.method) != render::ShadingMethod::Lit;
+}
+
+/// Creates the renderer on the window's context, uploads the organ and its textures, and
+/// builds the shading methods the organ can switch between (`initialMethod` first shown).
+Result<void> setUpRendering(Session& s, const std::string& initialMethod) {
   render::RendererSettings settings;
   settings.gpuTimers = false;  // timer queries would stall every frame waiting for the GPU
   auto renderer = render::Renderer::create(s.window->procAddress(), settings);
   if (!renderer) return renderer.error();
   s.renderer.emplace(std::move(*renderer));
   const auto& surface = s.organ.surface;
-  if (s.organ.baseColor)
-    if (auto ok = s.renderer->setBaseColor(*s.organ.baseColor); !ok) return ok;
-  if (s.organ.normalMap)
-    if (auto ok = s.renderer->setNormalMap(*s.organ.normalMap); !ok) return ok;
-  return s.renderer->setMesh(
+  auto mesh = s.renderer->createMesh(
       {surface.positions(), surface.normals(), surface.tangents(), surface.uvs(), surface.triangles(), {}});
+  if (!mesh) return mesh.error();
+  s.mesh = *mesh;
+  auto base = upload(*s.renderer, s.organ.baseColor);
+  auto normal = upload(*s.renderer, s.organ.normalMap);
+  auto inner = upload(*s.renderer, s.organ.innerBase);
+  auto opacity = upload(*s.renderer, s.organ.opacity);
+  for (const auto* r : {&base, &normal, &inner, &opacity})
+    if (!*r) return r->error();
+  s.normalMap = *normal;
+  auto methods = organMethods(s.organ, {*inner, *opacity});
+  if (!methods) return methods.error();
+  s.methods = std::move(*methods);
+  auto index = findMethod(s.methods, initialMethod);
+  if (!index) return index.error();
+  s.method = *index;
+  render::SceneObject organ;
+  organ.mesh = s.mesh;
+  organ.baseColor = *base;
+  s.scene.objects = {organ};
+  applyMethod(s);
+  return {};
 }
 
 /// Right button down at (`x`, `y`) window pixels: the instrument touches the nearest surface
@@ -107,7 +145,13 @@ bool handleInput(Session& s, const PokeScript* script, double timeS) {
     s.poke->reset();
     s.orbit->reset();
   }
-  if (in.toggleNormalMap) s.renderer->setNormalMapping(s.normalMapping = !s.normalMapping);
+  if (in.toggleNormalMap) s.normalMapping = !s.normalMapping;
+  if (in.cycleMethod) {
+    s.method = (s.method + 1) % s.methods.size();
+    std::printf("tissue-viewer: shading method %s\n",
+                std::string(render::shadingMethodName(render::shadingMethod(s.methods[s.method]))).c_str());
+  }
+  applyMethod(s);
   s.orbit->orbit(in.dragX, in.dragY);
   s.orbit->zoom(in.scrollSteps);
   updateScene(s);
@@ -126,7 +170,8 @@ void report(Session& s, FrameTimer& timer) {
   const auto [totals, fps] = timer.takeWindow();
   char head[32];
   std::snprintf(head, sizeof head, "%.1f fps | ", fps);
-  const std::string line = std::string(head) + totals.summary();
+  const std::string method(render::shadingMethodName(render::shadingMethod(s.methods[s.method])));
+  const std::string line = method + " | " + std::string(head) + totals.summary();
   s.window->setTitle("tissue-viewer - " + line);
   std::printf("tissue-viewer: %s\n", line.c_str());
   std::fflush(stdout);
@@ -152,7 +197,8 @@ Result<void> runFrames(Session& s, const ViewerOptions& options, FrameTimer& tim
     if (moved) timer.time(Phase::Mesh, [&] { s.meshBreakdown.add(surface.update(s.poke->positions())); });
     const auto uploaded = timer.time(Phase::Upload, [&]() -> Result<void> {
       if (!moved) return {};
-      return s.renderer->updateMesh(surface.positions(), surface.normals(), surface.tangents());
+      return s.renderer->updateMesh(s.mesh,
+                                    {0, surface.positions(), surface.normals(), surface.tangents(), {}});
     });
     if (!uploaded) return uploaded;
     int width = 0, height = 0;
@@ -188,7 +234,7 @@ Result<void> runViewer(const ViewerOptions& options) {
   if (!window)
     return Error{"cannot open a window: " + window.error().message + "; run under a display or xvfb-run"};
   s.window = std::move(*window);
-  if (auto ok = setUpRendering(s); !ok) return ok;
+  if (auto ok = setUpRendering(s, options.method); !ok) return ok;
 
   // The home view frames the rest shape; the poke starts at rest.
   const auto rest = s.organ.surface.geometricRestPositions();

@@ -4,6 +4,7 @@
 /// The frame loop runs named, timed phases: input, deform, mesh, upload, render, present.
 
 #include <filesystem>
+#include <string>
 
 #include "organ_assets.h"
 #include "tissue/core/result.h"
@@ -19,6 +20,8 @@ struct ViewerOptions {
   long frames = 0;                   ///< frames to run; 0: until the window closes
   std::filesystem::path screenshot;  ///< PNG of the last frame (offscreen, window size); empty: none
   bool pokeScript = false;           ///< poke the top of the organ automatically
+  /// The organ's shading method at start: lit, separable, texture-space or parallax (M cycles).
+  std::string method = "lit";
 };
 
 /// Runs the viewer until the window closes, Esc, or `options.frames`. The error is one line

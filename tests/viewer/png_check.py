@@ -2,7 +2,11 @@
 """Checks on the viewer's screenshots, standard library only (no numpy, no PIL).
 
 png_check.py organ A.png      the picture is not one colour and the organ covers 5-95 % of it
-png_check.py differ A.png B.png   at least 100 pixels differ clearly (> 24 levels in a channel)
+png_check.py differ A.png B.png [LEVELS COUNT]
+                                  at least COUNT (100) pixels differ by more than LEVELS (24) in a channel
+png_check.py softer A.png B.png   inside the organ (both pictures off the background), A's detail
+                                  (mean |4-neighbour Laplacian| of the green channel) is below 0.8
+                                  of B's: subsurface scattering blurs the normal-mapped surface
 """
 import struct
 import sys
@@ -66,10 +70,36 @@ def main():
         wb, hb, b = pixels(sys.argv[3])
         if (wa, ha) != (wb, hb):
             sys.exit("FAIL: the pictures differ in size")
-        changed = sum(1 for p, q in zip(a, b) if max(abs(x - y) for x, y in zip(p, q)) > 24)
-        print(f"{changed} pixels differ clearly")
-        if changed < 100:
-            sys.exit("FAIL: the poke did not change the picture")
+        levels, count = (int(sys.argv[4]), int(sys.argv[5])) if len(sys.argv) > 5 else (24, 100)
+        changed = sum(1 for p, q in zip(a, b) if max(abs(x - y) for x, y in zip(p, q)) > levels)
+        print(f"{changed} pixels differ by more than {levels} levels")
+        if changed < count:
+            sys.exit(f"FAIL: fewer than {count} pixels changed")
+    elif sys.argv[1] == "softer":
+        detail = []
+        wa, ha, a = pixels(sys.argv[2])
+        wb, hb, b = pixels(sys.argv[3])
+        if (wa, ha) != (wb, hb):
+            sys.exit("FAIL: the pictures differ in size")
+        bg = a[0]
+
+        def inside(px, i):
+            return max(abs(x - y) for x, y in zip(px[i], bg)) > 24
+
+        for px in (a, b):
+            total, count = 0, 0
+            for y in range(1, ha - 1):
+                for x in range(1, wa - 1):
+                    i = y * wa + x
+                    ring = (i - 1, i + 1, i - wa, i + wa)
+                    if not all(inside(a, j) and inside(b, j) for j in (i,) + ring):
+                        continue
+                    total += abs(4 * px[i][1] - sum(px[j][1] for j in ring))
+                    count += 1
+            detail.append(total / max(count, 1))
+        print(f"detail {detail[0]:.2f} against {detail[1]:.2f}")
+        if detail[0] >= 0.8 * detail[1]:
+            sys.exit("FAIL: not softer than the lit picture")
 
 
 if __name__ == "__main__":

@@ -18,4 +18,5 @@ check no-display "run under a display or xvfb-run" env -u DISPLAY -u WAYLAND_DIS
 check missing-mesh "missing.obj" env -u DISPLAY "$viewer" --mesh "$dir/missing.obj" --frames 1
 check no-uvs "no_uvs.obj" env -u DISPLAY "$viewer" --mesh "$dir/no_uvs.obj" --frames 1
 check bad-option "--frames" "$viewer" --frames -3
+check bad-method "--method" "$viewer" --method ray-march --frames 1
 exit $status
