@@ -105,7 +105,7 @@ namespace {
 /// The frame's subsurface diffuse (after the blur or the texture-space diffusion) against the
 /// exact convolution of its pre-blur diffuse with `truth` (tissue::reference), into `j`.
 /// Texture-space pixels hold their diffused radiance in the Diffuse view, so the caller passes
-/// the pre-blur frame of the same organ rendered separably (`before`).
+/// the pre-blur `diffuse` and `position` of the same frame rendered separably.
 void addReferenceError(render::Renderer& renderer, const render::FloatImage& diffuse,
                        const render::FloatImage& position, const reference::RadialProfile& truth,
                        nlohmann::json& j) {
@@ -141,7 +141,8 @@ nlohmann::json DemoRenderer::renderSubsurface(const mesh::DeformableSurface& sur
   if (!tsd) return fail(tsd.error().message);
   if (textureSpace && !mesh::hasUsableUvs(surface.uvs(), surface.triangles(), surface.positions().size()))
     return fail(
-        "texture-space diffusion needs unique UVs and the organ's overlap (see mesh::computeUvAtlas)");
+        "texture-space diffusion needs unique UVs, and the organ's UVs overlap (mesh::computeUvAtlas makes "
+        "unique ones)");
   // Step 2: the organ as it is now, separable, lit by a shadow-casting lamp (shadows and
   // transmission); its pre-blur diffuse is the reference's input for both methods.
   if (auto lit = render(surface, material, png); !lit) return fail(lit.error().message);
