@@ -415,6 +415,9 @@ TEST_P(RayMarchTest, BadSettingsAreClearErrors) {
   gpu->settings().subsurfaceMaps = {render::TextureHandle{999}};
   expectError("does not hold");
   gpu->settings() = good;
+  gpu->settings().subsurfaceMaps = {render::TextureHandle{}};
+  expectError("is no texture");
+  gpu->settings() = good;
   gpu->settings().layers[2].sigma_t = {0.0f, 1.0f, 1.0f};
   expectError("sigma_t > 0");
   // A mesh without planes cannot be ray marched.

@@ -31,6 +31,10 @@ std::array<TextureHandle, kMaxMethodTextures> methodTextureHandles(const MethodS
     for (std::size_t i = 0; i < p->layers.size() && i + 1 < out.size(); ++i)
       out[i + 1] = p->layers[i].base;
   }
+  if (const auto* r = std::get_if<RayMarchSettings>(&method)) {  // subsurface maps
+    for (std::size_t i = 0; i < r->subsurfaceMaps.size() && i < out.size(); ++i)
+      out[i] = r->subsurfaceMaps[i];
+  }
   return out;
 }
 
@@ -158,7 +162,7 @@ Result<void> Renderer::Impl::renderFrame(const Scene& scene, int width, int heig
         r = textureSpace.draw(frame, group);
         break;
       case ShadingMethod::RayMarch:
-        r = rayMarch.draw(frame, group, textures);
+        r = rayMarch.draw(frame, group);
         break;
       case ShadingMethod::Parallax:
         r = parallax.draw(frame, group);

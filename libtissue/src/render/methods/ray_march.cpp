@@ -33,8 +33,7 @@ struct ResolvedMaps {
   GLuint maps[kMaxSubsurfaceMaps] = {0, 0};
 };
 
-Result<ResolvedMaps> checkObject(const ObjectDraw& d, const RayMarchSettings& s,
-                                 const std::map<std::uint32_t, gl::Texture>& textures) {
+Result<ResolvedMaps> checkObject(const ObjectDraw& d, const RayMarchSettings& s) {
   const std::string where = "renderer: ray-march object " + std::to_string(static_cast<int>(d.objectId) - 1);
   const std::size_t maps = s.subsurfaceMaps.size();
   if (maps < 1 || maps > static_cast<std::size_t>(kMaxSubsurfaceMaps) || s.layers.size() != 4 * maps + 1) {
@@ -62,14 +61,13 @@ Result<ResolvedMaps> checkObject(const ObjectDraw& d, const RayMarchSettings& s,
                  "mesh::DeformableSurface::planes()) to createMesh"};
   }
   ResolvedMaps out;
+  // The frame resolved the handles (unknown ones are errors there); an empty one is none.
   for (std::size_t i = 0; i < maps; ++i) {
-    const auto t = textures.find(s.subsurfaceMaps[i].id);
-    if (!s.subsurfaceMaps[i] || t == textures.end()) {
-      return Error{where + "'s subsurface map " + std::to_string(i) + " names texture " +
-                   std::to_string(s.subsurfaceMaps[i].id) +
-                   ", which this renderer does not hold (createTexture it with TextureEncoding::LinearData)"};
+    if (d.methodTextures[i] == 0) {
+      return Error{where + "'s subsurface map " + std::to_string(i) +
+                   " is no texture; createTexture it with TextureEncoding::LinearData"};
     }
-    out.maps[i] = t->second.id();
+    out.maps[i] = d.methodTextures[i];
   }
   return out;
 }
@@ -138,11 +136,10 @@ Result<RayMarchMethod> RayMarchMethod::create(const gl::GlApi& gl, const gl::Sha
   return m;
 }
 
-Result<void> RayMarchMethod::draw(const FrameContext& frame, std::span<const ObjectDraw> objects,
-                                  const std::map<std::uint32_t, gl::Texture>& textures) const {
+Result<void> RayMarchMethod::draw(const FrameContext& frame, std::span<const ObjectDraw> objects) const {
   std::vector<ResolvedMaps> maps;
   for (const ObjectDraw& d : objects) {
-    auto resolved = checkObject(d, std::get<RayMarchSettings>(d.object->method), textures);
+    auto resolved = checkObject(d, std::get<RayMarchSettings>(d.object->method));
     if (!resolved) return resolved.error();
     maps.push_back(*resolved);
   }

@@ -4,9 +4,6 @@
 // HDR radiance target (shaders/raymarch/). The mesh's per-vertex fitted planes (attribute 4)
 // give the light's entry; the layer stack comes from the object's RayMarchSettings and its
 // subsurface maps. The same model runs on the CPU in tissue::subsurface (plane mode).
-#include <cstdint>
-#include <map>
-
 #include "frame_context.h"
 
 namespace tissue::render {
@@ -15,11 +12,10 @@ class RayMarchMethod {
  public:
   /// Builds the fixed-count and adaptive programs, each also in the samples-shown variant.
   static Result<RayMarchMethod> create(const gl::GlApi& gl, const gl::ShaderLibrary& library);
-  /// The "ray-march" pass over `objects`; `textures` are the renderer's, by handle id (the
-  /// objects' subsurface maps). Errors name the object and what to fix (layer and map counts,
-  /// unknown textures, a mesh without planes).
-  Result<void> draw(const FrameContext& frame, std::span<const ObjectDraw> objects,
-                    const std::map<std::uint32_t, gl::Texture>& textures) const;
+  /// The "ray-march" pass over `objects` (their subsurface maps resolved by the frame into
+  /// ObjectDraw::methodTextures). Errors name the object and what to fix (layer and map counts,
+  /// a missing map, a mesh without planes).
+  Result<void> draw(const FrameContext& frame, std::span<const ObjectDraw> objects) const;
 
  private:
   // [adaptive][showSamples]
