@@ -18,6 +18,7 @@ packages=(
   libcli11-dev             # command-line parsing
   libgtest-dev libgmock-dev libbenchmark-dev   # tests and benchmarks
   xvfb xauth               # X server for VTK views and GLFW windows without a display
+  libssl-dev               # SHA-256 of simulated positions (recorded sessions, replay): libtissue/src/scene
   libx11-dev               # Xlib: the chart adapter opens the display it hands VTK (libtissue/src/inspect)
 )
 

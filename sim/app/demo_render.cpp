@@ -23,6 +23,12 @@ struct DemoRenderer::Impl {
   std::optional<render::Renderer> renderer;
   std::optional<Error> setupError;
   render::Scene scene;  // one object: the organ
+  // The same, drawing the frame loop's mesh. Optional: a second default-constructed Scene member
+  // trips GCC 12's -Wmaybe-uninitialized (a false positive in its initializer-list copy).
+  std::optional<render::Scene> loopScene;
+  // The loop's renderer on the same context: no MSAA and no GPU timers, so that a frame costs
+  // what a trainee's frame would (4x MSAA of three float targets is llvmpipe's heaviest pass).
+  std::optional<render::Renderer> loopRenderer;
 };
 
 DemoRenderer::DemoRenderer(int width, int height) : m_impl(std::make_unique<Impl>()) {
@@ -32,6 +38,7 @@ DemoRenderer::DemoRenderer(int width, int height) : m_impl(std::make_unique<Impl
 
 DemoRenderer::~DemoRenderer() {
   if (m_impl->context) (void)m_impl->context->makeCurrent();  // GL objects die with their context current
+  m_impl->loopRenderer.reset();
   m_impl->renderer.reset();
 }
 
@@ -47,8 +54,7 @@ Result<Image8> loadTexture(const std::string& stem, const std::string& name) {
 
 }  // namespace
 
-Result<void> DemoRenderer::render(const mesh::DeformableSurface& surface, const LayeredMaterial& material,
-                                  const std::filesystem::path& png) {
+Result<void> DemoRenderer::prepare(const mesh::DeformableSurface& surface, const LayeredMaterial& material) {
   auto& s = *m_impl;
   if (s.setupError) return *s.setupError;
   // Setup on first use: context, renderer, textures, a camera framing the rest shape.
@@ -89,7 +95,51 @@ Result<void> DemoRenderer::render(const mesh::DeformableSurface& surface, const 
     const Float3 c{(lo.x + hi.x) / 2, (lo.y + hi.y) / 2, (lo.z + hi.z) / 2};
     s.scene.lights[0].positionMm = {c.x + 150.0f, c.y + 200.0f, hi.z + 300.0f};
   }
-  if (auto ok = s.context->makeCurrent(); !ok) return ok.error();
+  return s.context->makeCurrent();
+}
+
+Result<void> DemoRenderer::makeCurrent() {
+  if (!m_impl->context) return Error{"demo: the renderer is not set up"};
+  return m_impl->context->makeCurrent();
+}
+
+Result<scene::RenderRequest> DemoRenderer::attachLoop(scene::OrganLoop& loop, const LayeredMaterial& material,
+                                                      int width, int height, Image8* image) {
+  if (auto ok = prepare(loop.surface(), material); !ok) return ok.error();
+  auto& s = *m_impl;
+  render::RendererSettings settings;
+  settings.samples = 0;
+  settings.gpuTimers = false;
+  auto r = render::Renderer::create(s.context->procAddressFunction(), settings);
+  if (!r) return r.error();
+  s.loopRenderer.emplace(std::move(*r));
+  s.loopScene = s.scene;
+  auto& organ = s.loopScene->objects[0];
+  for (const auto& [name, slot] :
+       {std::pair{"base_color", &organ.baseColor}, std::pair{"normal_map", &organ.normalMap}}) {
+    auto tex = loadTexture(material.name, name);
+    if (!tex) return tex.error();
+    auto handle = s.loopRenderer->createTexture(*tex);
+    if (!handle) return handle.error();
+    *slot = *handle;
+  }
+  auto handle = loop.attach(*s.loopRenderer);
+  if (!handle) return handle.error();
+  organ.mesh = *handle;
+  organ.method = render::LitSettings{};
+  if (auto tool = loop.instrumentObject()) s.loopScene->objects.push_back(*tool);
+  scene::RenderRequest request;
+  request.scene = &*s.loopScene;
+  request.width = width;
+  request.height = height;
+  request.image = image;
+  return request;
+}
+
+Result<void> DemoRenderer::render(const mesh::DeformableSurface& surface, const LayeredMaterial& material,
+                                  const std::filesystem::path& png) {
+  auto& s = *m_impl;
+  if (auto ok = prepare(surface, material); !ok) return ok.error();
   // Upload: the whole mesh once (above), then only what deforms.
   auto up = s.renderer->updateMesh(s.scene.objects[0].mesh,
                                    {0, surface.positions(), surface.normals(), surface.tangents(), {}});

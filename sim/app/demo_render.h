@@ -10,6 +10,7 @@
 #include "material_file.h"
 #include "tissue/core/result.h"
 #include "tissue/mesh/deformable_surface.h"
+#include "tissue/scene/organ_loop.h"
 
 namespace tissue::sim_app {
 
@@ -21,6 +22,15 @@ class DemoRenderer {
   DemoRenderer(const DemoRenderer&) = delete;
   DemoRenderer& operator=(const DemoRenderer&) = delete;
 
+  /// Sets up the context, the renderer, the organ's textures and a camera framing `surface`'s
+  /// rest shape, once (later calls only make the context current).
+  Result<void> prepare(const mesh::DeformableSurface& surface, const LayeredMaterial& material);
+  /// Attaches `loop` to the renderer (its own mesh, drawn lit like the organ) and returns the
+  /// render request that draws it offscreen into `image` at `width` x `height` pixels.
+  Result<scene::RenderRequest> attachLoop(scene::OrganLoop& loop, const LayeredMaterial& material, int width,
+                                          int height, Image8* image);
+  /// Makes the renderer's context current (before a loop frame that renders).
+  Result<void> makeCurrent();
   /// Renders the surface as it is now and writes `png` atomically.
   Result<void> render(const mesh::DeformableSurface& surface, const LayeredMaterial& material,
                       const std::filesystem::path& png);

@@ -8,26 +8,22 @@
 #include <sstream>
 
 #include "demo_render.h"
+#include "loop_setup.h"
 #include "material_file.h"
 #include "output.h"
 #include "raymarch_scene.h"
 #include "tissue/core/atomic_file.h"
+#include "tissue/core/statistics.h"
 #include "tissue/core/stopwatch.h"
 #include "tissue/inspect/vtk_export.h"
 #include "tissue/mesh/deformable_surface.h"
 #include "tissue/mesh/load_mesh.h"
 #include "tissue/scenario/scenario_run.h"
+#include "tissue/scene/organ_loop.h"
+#include "tissue/scene/session.h"
 
 namespace tissue::sim_app {
 namespace {
-
-/// Running mean of a phase's cost.
-struct PhaseTimer {
-  double totalMs = 0.0;
-  int count = 0;
-  void add(double ms) { totalMs += ms, ++count; }
-  double meanMs() const { return count ? totalMs / count : 0.0; }
-};
 
 /// The contact force summary, and the force every 50 frames.
 void instrumentMarkdown(const nlohmann::json& i, std::ostringstream& md) {
@@ -54,9 +50,14 @@ std::string markdownReport(const nlohmann::json& r) {
      << " springs): a sphere pokes, grasps, lifts and releases the organ over " << r["frames"]
      << " frames.\n\n";
   instrumentMarkdown(r["instrument"], md);
-  md << "\n## Per-frame phases (mean ms)\n\n| phase | ms |\n|---|---|\n";
-  for (const auto& [name, ms] : r["phases_ms"].items())
-    md << "| " << name << " | " << ms << " |\n";
+  md << "\n## The frame loop: simulate, mesh, upload, render, every frame (ms)\n\n"
+     << "| phase | median | p99 | max |\n|---|---|---|---|\n";
+  for (const auto& p : r["phases_ms"])
+    md << "| " << p["phase"].get<std::string>() << " | " << p["median_ms"] << " | " << p["p99_ms"] << " | "
+       << p["max_ms"] << " |\n";
+  if (r.contains("sequence") && r["sequence"].contains("image"))
+    md << "\nEvery " << r["image_every"] << " frames: ![sequence]("
+       << r["sequence"]["image"].get<std::string>() << ")\n";
   md << "\n## Incremental plane re-fit\n\n"
      << "- planes re-fitted per frame (mean): " << r["refit"]["mean_refitted_fraction"] << " of all\n"
      << "- largest deviation from a full re-fit at the last frame: " << r["refit"]["max_normal_deviation_rad"]
@@ -100,36 +101,27 @@ struct DemoSetup {
   std::filesystem::path meshPath;
   LayeredMaterial material;
   mesh::PlaneFitSettings planeSettings;
-  std::optional<mesh::DeformableSurface> surface;
-  std::unique_ptr<scenario::ScenarioRun> run;
+  std::optional<mesh::DeformableSurface> surface;  ///< for the snapshots rendered after the loop
+  std::optional<scene::OrganLoop> loop;            ///< the per-frame loop (its own surface)
 };
 
 Result<DemoSetup> setUp(const DemoOptions& o) {
   const auto scenarioPath = o.scenarioFile.empty() ? dataDir() / "scenarios" / "liver_poke_grasp.json"
                                                    : std::filesystem::path(o.scenarioFile);
-  auto parsed = scenario::loadScenario(scenarioPath, {.sharedMeshesDir = sharedDir() / "meshes"});
-  if (!parsed) return parsed.error();
-  if (!o.meshFile.empty()) parsed->mesh = o.meshFile;
   if (o.frames < 0) return Error{"--frames must be at least 1 (0: the scenario's)"};
-  if (o.frames > 0) parsed->frames = o.frames;
+  auto organ = loadLoopOrgan(scenarioPath, o.meshFile);
+  if (!organ) return organ.error();
+  if (o.frames > 0) organ->scenario.frames = o.frames;
   DemoSetup d;
-  d.meshPath = parsed->mesh;
-  auto loaded = mesh::loadMesh(d.meshPath, {.requireUvs = true, .scaleToMm = float(parsed->meshScaleToMm)});
-  if (!loaded) return loaded.error();
-  auto material = readLayeredMaterial(materialFileFor(d.meshPath));
-  if (!material) return material.error();
-  d.material = std::move(*material);
-  d.planeSettings = {.sigma_t = d.material.firstLayerMinSigmaT, .epsilon = 0.01f};
-  auto surface = mesh::DeformableSurface::create(std::move(*loaded), d.planeSettings);
+  d.meshPath = organ->scenario.mesh;
+  d.material = std::move(organ->material);
+  d.planeSettings = organ->planes;
+  auto loop = scene::OrganLoop::create(organ->scenario, organ->mesh, {.planes = d.planeSettings});
+  if (!loop) return loop.error();
+  d.loop.emplace(std::move(*loop));
+  auto surface = mesh::DeformableSurface::create(std::move(organ->mesh), d.planeSettings);
   if (!surface) return surface.error();
   d.surface.emplace(std::move(*surface));
-  auto run = scenario::ScenarioRun::create(*parsed);
-  if (!run) return run.error();
-  d.run = std::move(*run);
-  if (d.run->mesh().positions.size() != d.surface->geometricRestPositions().size())
-    return Error{"demo: the simulated mesh has " + std::to_string(d.run->mesh().positions.size()) +
-                 " vertices but the shaded one " +
-                 std::to_string(d.surface->geometricRestPositions().size())};
   return d;
 }
 
@@ -155,9 +147,10 @@ nlohmann::json writeMethodsMontage(const std::filesystem::path& dir, const std::
   return {{"image", png}, {"panels", files}};
 }
 
-/// The render step (kept apart so that other shading methods can render the same frames).
-void renderFrame(DemoRenderer& renderer, DemoSetup& d, std::span<const Float3> positions,
-                 const std::filesystem::path& png, std::vector<std::string>& images, nlohmann::json& report) {
+/// Renders the surface in the state `positions` (a snapshot) and writes `png`.
+void renderSnapshot(DemoRenderer& renderer, DemoSetup& d, std::span<const Float3> positions,
+                    const std::filesystem::path& png, std::vector<std::string>& images,
+                    nlohmann::json& report) {
   d.surface->update(positions);
   if (auto img = renderer.render(*d.surface, d.material, png); img.ok())
     images.push_back(png.filename().string());
@@ -165,40 +158,91 @@ void renderFrame(DemoRenderer& renderer, DemoSetup& d, std::span<const Float3> p
     report["render_skipped"] = img.error().message;
 }
 
-/// What the frame loop keeps: per-frame metrics, phase costs, and two snapshots to render.
+/// What the frame loop keeps: per-frame metrics, phase costs, the images written every
+/// `imageEvery` frames, and two snapshots to render in every method.
 struct LoopResult {
   std::vector<scenario::FrameMetrics> frames;
-  PhaseTimer simulate, gather, normals, planes, tangents;
+  PhaseSamples phases;
   double refittedFraction = 0.0;
+  std::vector<std::string> sequence;                    ///< frames/frame_NNNN.png, in order
   std::vector<Float3> pokedPositions, liftedPositions;  ///< at the deepest push, the strongest pull
   long pokedFrame = -1, liftedFrame = -1;
 };
 
-Result<LoopResult> runFrames(DemoSetup& d) {
+/// The trainee's loop, headless: every frame simulates, updates the mesh, uploads and renders
+/// (scene::OrganLoop); every `imageEvery` frames the rendered image is written.
+Result<LoopResult> runFrames(DemoSetup& d, DemoRenderer& renderer, const DemoOptions& o,
+                             nlohmann::json& report) {
+  const int loopWidth = o.loopWidth, loopHeight = o.loopHeight, imageEvery = o.imageEvery;
+  const std::filesystem::path& outDir = o.outDir;
   LoopResult r;
-  const int frames = d.run->scenario().frames;
+  Image8 image;
+  std::optional<scene::RenderRequest> request;
+  if (auto attached = renderer.attachLoop(*d.loop, d.material, loopWidth, loopHeight, &image); attached.ok())
+    request = *attached;
+  else
+    report["render_skipped"] = attached.error().message;  // simulate and update the mesh all the same
+  const int frames = d.loop->run().scenario().frames;
+  std::optional<scene::SessionRecorder> recorder;
+  if (!o.recordSession.empty()) recorder.emplace(*d.loop);
   double strongestPush = 0.0, strongestPull = 0.0;
   for (int frame = 0; frame < frames; ++frame) {
-    // 1 simulate: springs, integration, contact and grasp inside each substep.
-    Stopwatch clock;
-    auto metrics = d.run->advance();
-    if (!metrics) return metrics.error();
-    const std::vector<Float3> positions = d.run->positions();
-    r.simulate.add(clock.elapsedMs());
-    // 2-5 positions in, normals, planes, tangents.
-    const auto stats = d.surface->update(positions);
-    r.gather.add(stats.gatherMs), r.normals.add(stats.normalsMs), r.planes.add(stats.planesMs),
-        r.tangents.add(stats.tangentsMs);
-    r.refittedFraction += double(stats.refit.refittedPlanes) / double(positions.size()) / frames;
-    // Snapshots for the renders: the hardest push (no grasp) and the hardest pull (grasping).
-    const double up = metrics->forceN.z;
-    if (metrics->grasped == 0 && up > strongestPush)
-      strongestPush = up, r.pokedPositions = positions, r.pokedFrame = frame;
-    if (metrics->grasped > 0 && -up > strongestPull)
-      strongestPull = -up, r.liftedPositions = positions, r.liftedFrame = frame;
-    r.frames.push_back(*metrics);
+    if (request)
+      if (auto ok = renderer.makeCurrent(); !ok) return ok.error();
+    auto f = d.loop->advance({}, request ? &*request : nullptr);
+    if (!f) return f.error();
+    r.phases.add(*f);
+    if (recorder) recorder->recordFrame(*d.loop);
+    const auto positions = d.loop->geometricPositions();
+    r.refittedFraction += double(f->mesh.refit.refittedPlanes) / double(positions.size()) / frames;
+    if (request && (frame + 1) % imageEvery == 0) {
+      char name[32];
+      std::snprintf(name, sizeof name, "frame_%04d.png", frame + 1);
+      if (auto w = writePng(outDir / "frames" / name, image); !w) return w.error();
+      r.sequence.push_back(std::string("frames/") + name);
+    }
+    // Snapshots for the method renders: the hardest push (no grasp) and the hardest pull.
+    const auto& m = f->simulation;
+    const double up = m.forceN.z;
+    if (m.grasped == 0 && up > strongestPush)
+      strongestPush = up, r.pokedPositions.assign(positions.begin(), positions.end()), r.pokedFrame = frame;
+    if (m.grasped > 0 && -up > strongestPull)
+      strongestPull = -up, r.liftedPositions.assign(positions.begin(), positions.end()),
+      r.liftedFrame = frame;
+    r.frames.push_back(m);
   }
+  if (recorder)
+    if (auto w = scene::saveSession(recorder->session(), o.recordSession); !w) return w.error();
   return r;
+}
+
+/// The images of the frame sequence tiled five per row at half size into `png`.
+nlohmann::json writeSequenceMontage(const std::filesystem::path& dir, const std::vector<std::string>& files,
+                                    const std::string& png) {
+  std::vector<Image8> images;
+  for (const auto& f : files) {
+    auto image = readImage(dir / f, 4);
+    if (!image) return {{"skipped", f + ": " + image.error().message}};
+    images.push_back(std::move(*image));
+  }
+  if (images.empty()) return {{"skipped", "no frames rendered"}};
+  const int w = images[0].width / 2, h = images[0].height / 2, columns = 5;
+  const int rows = (int(images.size()) + columns - 1) / columns;
+  Image8 tiled(std::min<int>(columns, int(images.size())) * w, rows * h, 4);
+  for (std::size_t i = 0; i < images.size(); ++i)
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        for (int c = 0; c < 4; ++c) {
+          // 2x2 box filter.
+          int sum = 0;
+          for (int dy = 0; dy < 2; ++dy)
+            for (int dx = 0; dx < 2; ++dx)
+              sum += images[i].at(2 * x + dx, 2 * y + dy)[c];
+          tiled.at(int(i % columns) * w + x, int(i / columns) * h + y)[c] =
+              static_cast<std::uint8_t>((sum + 2) / 4);
+        }
+  if (auto r = writePng(dir / png, tiled); !r) return {{"skipped", r.error().message}};
+  return {{"image", png}, {"frames", files}};
 }
 
 nlohmann::json instrumentReport(const LoopResult& r) {
@@ -221,7 +265,7 @@ nlohmann::json instrumentReport(const LoopResult& r) {
 }  // namespace
 
 Result<nlohmann::json> runDemo(const DemoOptions& o) {
-  // Setup: the organ, its material, the shading state that follows it, and the scenario.
+  // Setup: the organ, its material, the loop that moves and draws it, and the snapshots' surface.
   auto setup = setUp(o);
   if (!setup) return setup.error();
   DemoSetup& d = *setup;
@@ -231,23 +275,24 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
   const auto rest = d.surface->geometricRestPositions();
   const std::vector<Float3> restPositions(rest.begin(), rest.end());
 
-  // The frame loop: simulate, then update the mesh's shading data (named, timed phases).
-  auto loop = runFrames(d);
+  // The frame loop: simulate, mesh update, upload, render, every frame (named, timed phases).
+  auto loop = runFrames(d, renderer, o, report);
   if (!loop) return loop.error();
   const LoopResult& r = *loop;
-  // Check: the incremental planes equal a full re-fit of the final shape.
-  std::vector<Float4> incremental(d.surface->planes().begin(), d.surface->planes().end());
+  // Check: the loop's incremental planes against a full re-fit of the final shape.
+  d.surface->update(d.loop->geometricPositions());
   d.surface->refitAllPlanes();
-  const auto deviation = mesh::comparePlanes(incremental, d.surface->planes());
+  const auto deviation = mesh::comparePlanes(d.loop->surface().planes(), d.surface->planes());
   if (auto w = writeTextFileAtomic(o.outDir / "frames.csv", scenario::framesCsv(r.frames)); !w)
     return w.error();
+  report["sequence"] = writeSequenceMontage(o.outDir, r.sequence, "frame_sequence.png");
 
-  // Render: rest, the deepest poke, the strongest lift; inspection of the poked organ.
+  // Snapshots: rest, the deepest poke, the strongest lift, rendered at full quality.
   const std::vector<Float3>& poked = r.pokedPositions.empty() ? restPositions : r.pokedPositions;
-  renderFrame(renderer, d, restPositions, o.outDir / "frame_rest.png", images, report);
+  renderSnapshot(renderer, d, restPositions, o.outDir / "frame_rest.png", images, report);
   if (!r.liftedPositions.empty())
-    renderFrame(renderer, d, r.liftedPositions, o.outDir / "frame_lifted.png", images, report);
-  renderFrame(renderer, d, poked, o.outDir / "frame_poked.png", images, report);
+    renderSnapshot(renderer, d, r.liftedPositions, o.outDir / "frame_lifted.png", images, report);
+  renderSnapshot(renderer, d, poked, o.outDir / "frame_poked.png", images, report);
   if (!report.contains("render_skipped")) {
     report["render"] = renderer.info();
     report["render"]["images"] = images;
@@ -272,20 +317,19 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
   report["inspection"] = "organ_poked.vtp";
 
   report["mesh"] = d.meshPath.string();
-  report["scenario"] = d.run->scenario().file.string();
+  report["scenario"] = d.loop->run().scenario().file.string();
   report["material"] = d.material.name;
   report["vertices"] = rest.size();
   report["triangles"] = d.surface->triangles().size();
-  report["springs"] = d.run->simulator().system().springs.size();
+  report["springs"] = d.loop->run().simulator().system().springs.size();
+  report["simulated_nodes"] = d.loop->run().simulator().state().x.size();
   report["sigma_t_per_mm"] = d.planeSettings.sigma_t;
   report["plane_radius_mm"] = d.planeSettings.radiusMm();
   report["frames"] = r.frames.size();
+  report["image_every"] = o.imageEvery;
+  report["loop_image_size"] = {o.loopWidth, o.loopHeight};
   report["instrument"] = instrumentReport(r);
-  report["phases_ms"] = {{"1 simulate (springs, contact, grasp)", r.simulate.meanMs()},
-                         {"2 positions in", r.gather.meanMs()},
-                         {"3 normals", r.normals.meanMs()},
-                         {"4 planes (incremental)", r.planes.meanMs()},
-                         {"5 tangent frames", r.tangents.meanMs()}};
+  report["phases_ms"] = phaseReport(r.phases);
   report["refit"] = {{"mean_refitted_fraction", r.refittedFraction},
                      {"max_normal_deviation_rad", deviation.maxAngleRad},
                      {"max_offset_deviation_mm", deviation.maxOffsetMm}};

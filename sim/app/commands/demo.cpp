@@ -2,7 +2,8 @@
 // data/scenarios/liver_poke_grasp.json (a sphere pokes, grasps, lifts and releases the data/
 // liver, reporting the contact force every frame), keeps normals, tangent frames and the local planes of
 // subsurface texture mapping in step, renders the organ before and after (when a GL context
-// can be created), and writes a report. Each frame is a sequence of named, timed phases.
+// can be created) every frame through the library's loop (tissue::scene::OrganLoop: simulate, mesh,
+// upload, render), writes every 100th frame and a report with the median and p99 of each phase.
 #include <cmath>
 #include <iostream>
 
@@ -23,6 +24,14 @@ void registerDemoCommand(CLI::App& app, const GlobalOptions& global, int& exitCo
   cmd->add_option("--frames", o->frames, "frames to simulate (default: the scenario's)");
   cmd->add_option("--width", o->width, "image width in pixels (default 960)");
   cmd->add_option("--height", o->height, "image height in pixels (default 720)");
+  cmd->add_option("--image-every", o->imageEvery,
+                  "write the loop's rendered frame every this many frames (default 100)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--record", o->recordSession,
+                  "also write the run as a session file (tissue-sim replay re-runs it; docs/SESSIONS.md)");
+  cmd->add_option("--loop-width", o->loopWidth, "pixels of the frame rendered every loop frame (default 480)")
+      ->check(CLI::Range(16, 8192));
+  cmd->add_option("--loop-height", o->loopHeight, "pixels (default 360)")->check(CLI::Range(16, 8192));
   cmd->callback([o, &global, &exitCode] {
     auto report = runDemo(*o);
     if (!report) {

@@ -61,7 +61,7 @@ Result<FrameMetrics> ScenarioRun::advance() {
   // Scripted grasps and releases due before this frame starts.
   Stopwatch actions;
   const double start = static_cast<double>(m_simulator.frame()) * m_scenario.frameTime;
-  if (m_instrument) {
+  if (m_instrument && !m_live) {
     const auto& list = m_scenario.instrument->actions;
     for (; m_nextAction < list.size() && list[m_nextAction].time <= start + 1e-9; ++m_nextAction) {
       if (list[m_nextAction].grasp) {

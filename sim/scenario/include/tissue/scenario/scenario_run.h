@@ -47,6 +47,13 @@ class ScenarioRun {
   /// Applies the scripted actions that are due, then advances one frame.
   Result<FrameMetrics> advance();
 
+  // Live input (viewer, replayed session, host): defined in scenario_live.cpp.
+  /// The tool moves linearly to `pose` (mm) over the next frame; the scripted path and actions
+  /// stop from now on. Fails without an instrument or on a non-finite pose (naming it).
+  Result<void> setInstrumentTarget(const sim::ToolPose& pose);
+  /// Grasps (true) or releases (false) now; a no-op when already in that state.
+  Result<void> setGrasp(bool grasp);
+
   const Scenario& scenario() const { return m_scenario; }
   const ScenarioMesh& mesh() const { return m_mesh; }
   const sim::Simulator& simulator() const { return m_simulator; }
@@ -64,6 +71,7 @@ class ScenarioRun {
   sim::Simulator m_simulator;
   std::optional<sim::Instrument> m_instrument;
   std::size_t m_nextAction = 0;
+  bool m_live = false;  ///< live input replaced the scripted path and actions
 };
 
 /// Summary over frames: counts, NaN frames, the largest and mean |F| (N), divergence events,

@@ -1,0 +1,52 @@
+#include "loop_setup.h"
+
+#include <cmath>
+
+#include "output.h"
+#include "tissue/core/statistics.h"
+#include "tissue/mesh/load_mesh.h"
+
+namespace tissue::sim_app {
+
+Result<LoopOrgan> loadLoopOrgan(const std::filesystem::path& scenarioFile, const std::string& meshOverride) {
+  auto parsed = scenario::loadScenario(scenarioFile, {.sharedMeshesDir = sharedDir() / "meshes"});
+  if (!parsed) return parsed.error();
+  if (!meshOverride.empty()) parsed->mesh = meshOverride;
+  auto loaded = mesh::loadMesh(parsed->mesh, {.requireUvs = true, .scaleToMm = float(parsed->meshScaleToMm)});
+  if (!loaded) return loaded.error();
+  auto material = readLayeredMaterial(materialFileFor(parsed->mesh));
+  if (!material) return material.error();
+  const mesh::PlaneFitSettings planes{.sigma_t = material->firstLayerMinSigmaT, .epsilon = 0.01f};
+  LoopOrgan organ{.scenario = std::move(*parsed),
+                  .mesh = std::move(*loaded),
+                  .material = std::move(*material),
+                  .planes = planes};
+  return organ;
+}
+
+void PhaseSamples::add(const scene::LoopFrame& f) {
+  const double values[] = {f.ms.simulateMs,   f.mesh.gatherMs, f.mesh.normalsMs, f.mesh.planesMs,
+                           f.mesh.tangentsMs, f.ms.uploadMs,   f.ms.renderMs,    f.ms.totalMs};
+  for (std::size_t i = 0; i < phases.size(); ++i)
+    phases[i].second.push_back(values[i]);
+}
+
+double rounded(double x) {
+  if (x == 0.0 || !std::isfinite(x)) return x;
+  const double scale = std::pow(10.0, 2 - std::floor(std::log10(std::abs(x))));
+  return std::round(x * scale) / scale;
+}
+
+nlohmann::json phaseReport(const PhaseSamples& samples) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& [name, values] : samples.phases) {
+    const auto s = summarizeSamples(values);
+    j.push_back({{"phase", name},
+                 {"median_ms", rounded(s.median)},
+                 {"p99_ms", rounded(s.p99)},
+                 {"max_ms", rounded(s.max)}});
+  }
+  return j;
+}
+
+}  // namespace tissue::sim_app
