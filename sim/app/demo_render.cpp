@@ -1,4 +1,5 @@
 #include "demo_render.h"
+#include "gl_environment.h"
 
 #include <algorithm>
 #include <limits>
@@ -61,11 +62,12 @@ Result<void> DemoRenderer::prepare(const mesh::DeformableSurface& surface, const
   if (!s.renderer) {
     context::ContextRequest request;
     request.width = request.height = 16;  // the renderer draws into its own framebuffer
-    auto ctx = context::createHeadlessContext(request);
+    auto ctx = createAppContext(request);
     if (!ctx) return *(s.setupError = ctx.error());
     s.context = std::move(*ctx);
     render::RendererSettings settings;
     settings.samples = 4;
+    settings.shaders = shaderSettingsFromEnvironment();
     auto r = render::Renderer::create(s.context->procAddressFunction(), settings);
     if (!r) return *(s.setupError = r.error());
     s.renderer.emplace(std::move(*r));
@@ -110,6 +112,7 @@ Result<scene::RenderRequest> DemoRenderer::attachLoop(scene::OrganLoop& loop, co
   render::RendererSettings settings;
   settings.samples = 0;
   settings.gpuTimers = false;
+  settings.shaders = shaderSettingsFromEnvironment();
   auto r = render::Renderer::create(s.context->procAddressFunction(), settings);
   if (!r) return r.error();
   s.loopRenderer.emplace(std::move(*r));

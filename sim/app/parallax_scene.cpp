@@ -1,5 +1,6 @@
 // The layered-parallax commands' shared setup: organ, renderer, textures, one parallax object.
 #include "parallax_scene.h"
+#include "gl_environment.h"
 
 #include "output.h"
 #include "tissue/context/headless_context.h"
@@ -13,11 +14,12 @@ Result<ParallaxScene> loadParallaxScene(const std::filesystem::path& path, float
   auto organ = loadTsdOrgan(path, scale);
   if (!organ) return organ.error();
   out.organ = std::move(*organ);
-  auto context = context::createHeadlessContext({}, {.backend = "", .log = false});
+  auto context = createAppContext({}, false);
   if (!context) return context.error();
   out.context = std::move(*context);
-  auto renderer = render::Renderer::create(out.context->procAddressFunction(),
-                                           {.shaders = {}, .samples = samples, .gpuTimers = true});
+  auto renderer = render::Renderer::create(
+      out.context->procAddressFunction(),
+      {.shaders = shaderSettingsFromEnvironment(), .samples = samples, .gpuTimers = true});
   if (!renderer) return renderer.error();
   out.renderer = std::move(*renderer);
   auto mesh = out.renderer->createMesh(out.organ.arrays());

@@ -1,4 +1,5 @@
 #include "raymarch_scene.h"
+#include "gl_environment.h"
 
 #include <algorithm>
 #include <cmath>
@@ -168,9 +169,12 @@ Result<nlohmann::json> renderRayMarchPng(const RayMarchScene& scene, const rende
                                          int width, int height, const std::filesystem::path& png) {
   context::ContextRequest request;
   request.width = request.height = 16;  // the renderer draws into its own framebuffer
-  auto context = context::createHeadlessContext(request);
+  auto context = createAppContext(request);
   if (!context) return context.error();
-  auto gpu = makeRayMarchRender(scene, (*context)->procAddressFunction());
+  render::RendererSettings settings;
+  settings.shaders = shaderSettingsFromEnvironment();
+  settings.finishPasses = true;  // the ray-march pass is timed to completion
+  auto gpu = makeRayMarchRender(scene, (*context)->procAddressFunction(), settings);
   if (!gpu) return gpu.error();
   gpu->setMarch(march);
   double passMs = 0.0;

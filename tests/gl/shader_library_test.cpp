@@ -11,7 +11,7 @@ namespace tissue::test {
 namespace {
 
 gl::ShaderLibrary embeddedOnly() {
-  return gl::ShaderLibrary({.overrideDir = {}, .useEnvironment = false});
+  return gl::ShaderLibrary({.overrideDir = {}});
 }
 
 std::filesystem::path scratchDir(const std::string& name) {
@@ -56,7 +56,7 @@ TEST(ShaderLibraryTest, OverrideFolderWinsAndIncludesOnce) {
   writeFile(dir / "common/a.glsl", "float a() { return 1.0; }\n");
   writeFile(dir / "x.frag",
             "#version 330 core\n#include \"common/a.glsl\"\n#include \"common/a.glsl\"\nvoid main() {}\n");
-  const gl::ShaderLibrary library({.overrideDir = dir, .useEnvironment = false});
+  const gl::ShaderLibrary library({.overrideDir = dir});
   auto shader = library.preprocess("x.frag");
   ASSERT_TRUE(shader) << shader.error().message;
   const std::string& s = shader->source;
@@ -69,7 +69,7 @@ TEST(ShaderLibraryTest, OverrideFolderWinsAndIncludesOnce) {
 TEST(ShaderLibraryTest, MissingIncludeNamesFileAndLine) {
   const auto dir = scratchDir("missing_include");
   writeFile(dir / "y.frag", "#version 330 core\n\n#include \"common/absent.glsl\"\nvoid main() {}\n");
-  auto shader = gl::ShaderLibrary({.overrideDir = dir, .useEnvironment = false}).preprocess("y.frag");
+  auto shader = gl::ShaderLibrary({.overrideDir = dir}).preprocess("y.frag");
   ASSERT_FALSE(shader);
   EXPECT_NE(shader.error().message.find("common/absent.glsl"), std::string::npos) << shader.error().message;
   EXPECT_NE(shader.error().message.find("y.frag:3"), std::string::npos) << shader.error().message;
@@ -78,7 +78,7 @@ TEST(ShaderLibraryTest, MissingIncludeNamesFileAndLine) {
 TEST(ShaderLibraryTest, MissingVersionIsAnError) {
   const auto dir = scratchDir("no_version");
   writeFile(dir / "z.frag", "void main() {}\n");
-  auto shader = gl::ShaderLibrary({.overrideDir = dir, .useEnvironment = false}).preprocess("z.frag");
+  auto shader = gl::ShaderLibrary({.overrideDir = dir}).preprocess("z.frag");
   ASSERT_FALSE(shader);
   EXPECT_NE(shader.error().message.find("#version"), std::string::npos);
 }
@@ -104,7 +104,7 @@ TEST_P(ShaderCompileTest, BrokenShaderGivesErrorWithFileNameAndLog) {
   writeFile(dir / "broken.frag",
             "#version 330 core\n#include \"common/tonemap.glsl\"\nout vec4 c;\nvoid main() { c = "
             "undefinedThing; }\n");
-  const gl::ShaderLibrary library({.overrideDir = dir, .useEnvironment = false});
+  const gl::ShaderLibrary library({.overrideDir = dir});
   auto program = gl::buildProgram(**gl, library, {"common/surface.vert", "broken.frag", {}});
   ASSERT_FALSE(program);
   const std::string& message = program.error().message;

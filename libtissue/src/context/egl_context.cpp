@@ -111,8 +111,7 @@ Result<std::unique_ptr<GlContext>> createEglContext(const ContextRequest& reques
       reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
   if (!getPlatformDisplay) return Error{"egl: no eglGetPlatformDisplayEXT"};
   std::string why;
-  std::string only = request.eglPlatform;
-  if (const char* env = std::getenv("TISSUE_EGL_PLATFORM"); only.empty() && env) only = env;
+  const std::string& only = request.eglPlatform;
   if (!only.empty() && only != "device" && only != "surfaceless") {
     return Error{"egl: unknown EGL platform '" + only + "' (TISSUE_EGL_PLATFORM); use device or surfaceless"};
   }

@@ -1,11 +1,9 @@
-// Picking a context backend from the request, the environment, or EGL with OSMesa fallback.
+// Picking a headless context backend from the options, or EGL with OSMesa fallback.
 #include "tissue/context/headless_context.h"
 
-#include <cstdlib>
 #include <iostream>
 
 #include "tissue/context/egl_context.h"
-#include "tissue/context/glfw_context.h"
 #include "tissue/context/osmesa_context.h"
 
 namespace tissue::context {
@@ -20,17 +18,12 @@ void logInfo(const ContextInfo& info) {
 
 Result<std::unique_ptr<GlContext>> createHeadlessContext(const ContextRequest& request,
                                                          const HeadlessOptions& options) {
-  std::string backend = options.backend;
-  if (backend.empty()) {
-    if (const char* env = std::getenv("TISSUE_GL_CONTEXT"); env && *env) backend = env;
-  }
+  const std::string& backend = options.backend;
   Result<std::unique_ptr<GlContext>> context = Error{};
   if (backend == "egl") {
     context = createEglContext(request);
   } else if (backend == "osmesa") {
     context = createOsMesaContext(request);
-  } else if (backend == "glfw") {
-    context = createGlfwContext(request);
   } else if (backend.empty()) {
     context = createEglContext(request);
     if (!context) {
@@ -39,7 +32,9 @@ Result<std::unique_ptr<GlContext>> createHeadlessContext(const ContextRequest& r
       context = createOsMesaContext(request);
     }
   } else {
-    return Error{"unknown GL context backend '" + backend + "' (TISSUE_GL_CONTEXT); use egl, osmesa or glfw"};
+    return Error{
+        "unknown headless GL context backend '" + backend +
+        "' (TISSUE_GL_CONTEXT); use egl or osmesa (a window: the viewer, or the host's own context)"};
   }
   if (context && options.log) logInfo((*context)->info());
   return context;

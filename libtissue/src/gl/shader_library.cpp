@@ -87,11 +87,7 @@ struct Assembler {
 }  // namespace
 
 ShaderLibrary::ShaderLibrary(ShaderLibrarySettings settings)
-    : m_overrideDir(std::move(settings.overrideDir)) {
-  if (m_overrideDir.empty() && settings.useEnvironment) {
-    if (const char* env = std::getenv("TISSUE_SHADER_DIR"); env && *env) m_overrideDir = env;
-  }
-}
+    : m_overrideDir(std::move(settings.overrideDir)) {}
 
 Result<std::string> ShaderLibrary::source(std::string_view name) const {
   // Step 1: the override folder (live editing) wins when it holds the file.

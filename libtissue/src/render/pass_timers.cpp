@@ -2,13 +2,15 @@
 
 namespace tissue::render {
 
-void PassTimers::beginFrame(const gl::GlApi& gl, bool gpu) {
+void PassTimers::beginFrame(const gl::GlApi& gl, bool gpu, bool finish) {
   m_gl = &gl;
   m_gpu = gpu;
+  m_finish = finish;
   m_passes.clear();
 }
 
 void PassTimers::begin(const std::string& name) {
+  if (m_finish) m_gl->Finish();  // earlier passes complete before this one's clock starts
   Running pass;
   pass.timing.name = name;
   if (m_gpu) {
@@ -23,6 +25,7 @@ void PassTimers::begin(const std::string& name) {
 void PassTimers::end() {
   Running& pass = m_passes.back();
   if (pass.query >= 0) m_gl->EndQuery(GL_TIME_ELAPSED);
+  if (m_finish) m_gl->Finish();  // llvmpipe rasterises lazily: wait for this pass's fragments
   pass.timing.cpuMs = pass.started.elapsedMs();
 }
 

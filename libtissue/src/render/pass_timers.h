@@ -13,8 +13,9 @@ namespace tissue::render {
 
 class PassTimers {
  public:
-  /// Starts a frame; `gpu` turns the timer queries on.
-  void beginFrame(const gl::GlApi& gl, bool gpu);
+  /// Starts a frame; `gpu` turns the timer queries on, `finish` waits for the GPU around every
+  /// pass (RendererSettings::finishPasses).
+  void beginFrame(const gl::GlApi& gl, bool gpu, bool finish = false);
   /// Runs `pass` (a callable returning Result<void>) as the pass `name`.
   template <class F>
   Result<void> run(const std::string& name, F&& pass) {
@@ -36,6 +37,7 @@ class PassTimers {
   void end();
   const gl::GlApi* m_gl = nullptr;
   bool m_gpu = false;
+  bool m_finish = false;
   std::vector<gl::Query> m_queries;  // grows to the most passes a frame has had
   std::vector<Running> m_passes;
 };

@@ -174,7 +174,7 @@ Result<Image8> Renderer::renderImage(const Scene& scene, int width, int height) 
   const gl::GlApi& g = s.gl();
   StateGuard guard(g);
   Stopwatch total;
-  s.passes.beginFrame(g, s.settings.gpuTimers);
+  s.passes.beginFrame(g, s.settings.gpuTimers, s.settings.finishPasses);
   if (auto r = s.targets.ensure(g, width, height, s.settings.samples); !r) return r.error();
   if (auto r = s.renderFrame(scene, width, height, s.targets.outputFramebuffer(), 0, 0, true); !r) {
     s.passes.finishFrame();
@@ -201,7 +201,7 @@ Result<void> Renderer::renderTo(const Scene& scene, const HostFramebuffer& targe
   if (g.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
     return Error{"renderer: host framebuffer " + std::to_string(target.framebuffer) + " is incomplete"};
   }
-  s.passes.beginFrame(g, s.settings.gpuTimers);
+  s.passes.beginFrame(g, s.settings.gpuTimers, s.settings.finishPasses);
   auto r =
       s.renderFrame(scene, target.width, target.height, target.framebuffer, target.x, target.y, target.clear);
   s.timings.passes = s.passes.finishFrame();

@@ -1,15 +1,17 @@
 // tissue-sim info: which GL context tissue gets here and what the driver says about itself.
 #include "command.h"
+#include "gl_environment.h"
 #include "output.h"
 #include "tissue/context/headless_context.h"
 
 namespace tissue::sim_app {
 
 void registerInfoCommand(CLI::App& app, const GlobalOptions& global, int& exitCode) {
-  auto* cmd =
-      app.add_subcommand("info", "describe the headless GL context (TISSUE_GL_CONTEXT=egl|osmesa|glfw)");
+  auto* cmd = app.add_subcommand("info",
+                                 "describe the headless GL context (TISSUE_GL_CONTEXT=egl|osmesa, "
+                                 "TISSUE_EGL_PLATFORM=device|surfaceless)");
   cmd->callback([&global, &exitCode] {
-    auto context = context::createHeadlessContext({}, {.backend = "", .log = false});
+    auto context = createAppContext({}, false);
     if (!context) {
       exitCode = fail("info", context.error().message);
       return;

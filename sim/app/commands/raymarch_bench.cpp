@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "command.h"
+#include "gl_environment.h"
 #include "output.h"
 #include "raymarch_scene.h"
 #include "tissue/context/headless_context.h"
@@ -152,9 +153,12 @@ int run(BenchOptions o, const GlobalOptions& global) {
                                                                 pinholeOf(scene.camera), ref);
   const Image8 planesImage = subsurface::toDisplay(planesOnly, kRayMarchRadianceScale, kRayMarchBackground);
   // Step 3: the pipeline's ray-march method at each setting.
-  auto context = context::createHeadlessContext({}, {.backend = "", .log = false});
+  auto context = createAppContext({}, false);
   if (!context) return fail(cmd, context.error().message);
-  auto gpu = makeRayMarchRender(scene, (*context)->procAddressFunction());
+  render::RendererSettings rendererSettings;
+  rendererSettings.shaders = shaderSettingsFromEnvironment();
+  rendererSettings.finishPasses = true;  // the ray-march pass is timed to completion
+  auto gpu = makeRayMarchRender(scene, (*context)->procAddressFunction(), rendererSettings);
   if (!gpu) return fail(cmd, gpu.error().message);
   nlohmann::json results = nlohmann::json::array();
   Image8 hundredImage;

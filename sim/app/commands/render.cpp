@@ -9,6 +9,7 @@
 #include "../parallax_scene.h"
 #include "../pass_timings_json.h"
 #include "command.h"
+#include "gl_environment.h"
 #include "output.h"
 #include "raymarch_scene.h"
 #include "texture_space_setup.h"
@@ -163,10 +164,11 @@ int run(RenderOptions o, const GlobalOptions& global) {
   const bool hasUvs = m.hasUvs() && !loaded->atlas;
   if (!m.hasUvs()) m.uvs.assign(m.positions.size(), Float2{});  // no UVs: shade with the vertex normals only
   // Step 2: a context, the renderer, the mesh and textures.
-  auto context = context::createHeadlessContext({}, {.backend = "", .log = false});
+  auto context = createAppContext({}, false);
   if (!context) return fail(cmd, context.error().message);
-  auto renderer = render::Renderer::create((*context)->procAddressFunction(),
-                                           {.shaders = {}, .samples = o.samples, .gpuTimers = true});
+  auto renderer = render::Renderer::create(
+      (*context)->procAddressFunction(),
+      {.shaders = shaderSettingsFromEnvironment(), .samples = o.samples, .gpuTimers = true});
   if (!renderer) return fail(cmd, renderer.error().message);
   auto meshHandle = renderer->createMesh({m.positions, normals, tangents, m.uvs, m.triangles, {}});
   if (!meshHandle) return fail(cmd, meshHandle.error().message);

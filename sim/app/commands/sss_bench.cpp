@@ -7,6 +7,7 @@
 #include "../sss_bench.h"
 #include "../sss_material.h"
 #include "command.h"
+#include "gl_environment.h"
 #include "output.h"
 #include "tissue/context/headless_context.h"
 #include "tissue/mesh/deformable_surface.h"
@@ -84,10 +85,11 @@ int run(const BenchOptions& o, const GlobalOptions& global) {
   auto truth = makeSeparableMaterial(ctx.material, "preintegrated", 17);
   if (!truth) return fail(cmd, truth.error().message);
   ctx.profiles = {reference::RadialProfile{}, truth->truth};
-  auto context = context::createHeadlessContext({}, {.backend = "", .log = false});
+  auto context = createAppContext({}, false);
   if (!context) return fail(cmd, context.error().message);
   render::RendererSettings settings;
   settings.samples = o.samples;
+  settings.shaders = shaderSettingsFromEnvironment();
   auto renderer = render::Renderer::create((*context)->procAddressFunction(), settings);
   if (!renderer) return fail(cmd, renderer.error().message);
   ctx.renderer = &*renderer;

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "command.h"
+#include "gl_environment.h"
 #include "output.h"
 #include "texture_space_setup.h"
 #include "tissue/context/headless_context.h"
@@ -128,10 +129,11 @@ int run(const BenchOptions& o, const GlobalOptions& global) {
   float size = 0.0f;
   Stopwatch total;
   {
-    auto context = context::createHeadlessContext({}, {.backend = "", .log = false});
+    auto context = createAppContext({}, false);
     if (!context) return fail(cmd, context.error().message);
-    auto renderer = render::Renderer::create((*context)->procAddressFunction(),
-                                             {.shaders = {}, .samples = 0, .gpuTimers = false});
+    auto renderer = render::Renderer::create(
+        (*context)->procAddressFunction(),
+        {.shaders = shaderSettingsFromEnvironment(), .samples = 0, .gpuTimers = false});
     if (!renderer) return fail(cmd, renderer.error().message);
     // The row of organs, 1.1 organ widths apart: one mesh per instance (scene objects have no
     // transform), instance i centred at x_i = (i - 7.5) 1.1 w; n organs are the middle n.

@@ -20,7 +20,8 @@ struct ContextRequest {
   int height = 64;       ///< pixels
   bool visible = false;  ///< GLFW only: show the window
   bool debug = false;    ///< ask for a debug context where the backend supports it
-  /// EGL only: "device", "surfaceless", or empty: $TISSUE_EGL_PLATFORM, else device then surfaceless.
+  /// EGL only: "device", "surfaceless", or empty: device then surfaceless (apps pass
+  /// $TISSUE_EGL_PLATFORM here; the library never reads the environment).
   std::string eglPlatform;
 };
 

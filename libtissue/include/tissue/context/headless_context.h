@@ -1,8 +1,10 @@
 #pragma once
 /// \file
-/// Choosing a context backend (target tissue_contexts): environment variable
-/// TISSUE_GL_CONTEXT = egl | osmesa | glfw picks one; unset, EGL is tried first and OSMesa
-/// when EGL fails (the reason is logged on stderr in one line).
+/// Choosing a headless context backend (target tissue_contexts): HeadlessOptions::backend = egl |
+/// osmesa picks one; empty, EGL is tried first and OSMesa when EGL fails (the reason is logged on
+/// stderr in one line). The library never reads the environment: apps read TISSUE_GL_CONTEXT and
+/// TISSUE_EGL_PLATFORM and pass them in. Headless contexts do not link GLFW (a window is the
+/// viewer's or the host's, tissue_context_glfw).
 
 #include <memory>
 #include <string>
@@ -13,7 +15,7 @@ namespace tissue::context {
 
 /// How createHeadlessContext picks its backend.
 struct HeadlessOptions {
-  /// "egl", "osmesa", "glfw", or empty: then TISSUE_GL_CONTEXT, else EGL with OSMesa fallback.
+  /// "egl", "osmesa", or empty: EGL with OSMesa fallback.
   std::string backend;
   bool log = true;  ///< one stderr line per fallback and one with vendor/renderer/version
 };

@@ -23,10 +23,9 @@ struct ShaderDefine {
 
 /// Where shader sources come from.
 struct ShaderLibrarySettings {
-  /// Folder read before the embedded copy (live editing). Empty: the environment variable
-  /// TISSUE_SHADER_DIR when set, else embedded sources only.
+  /// Folder read before the embedded copy (live editing); empty: embedded sources only. Apps pass
+  /// $TISSUE_SHADER_DIR here (the library never reads the environment).
   std::filesystem::path overrideDir;
-  bool useEnvironment = true;  ///< consult TISSUE_SHADER_DIR when overrideDir is empty
 };
 
 /// A shader after preprocessing, with the files it was assembled from.

@@ -93,8 +93,13 @@ enum class TextureEncoding {
 struct RendererSettings {
   gl::ShaderLibrarySettings shaders;  ///< where GLSL comes from (embedded, or an override folder)
   int samples = 0;                    ///< MSAA samples of the geometry passes (0 or 1: none)
-  bool gpuTimers = true;              ///< time passes with GL queries (waits for the GPU each frame)
-  int shadowMapSize = 1024;           ///< pixels, square, per shadow-casting light
+  /// Time passes with GL queries. Off by default: collecting them waits for the GPU at the end of
+  /// every frame, which stalls a host's frame; benchmarks turn them on.
+  bool gpuTimers = false;
+  /// Benchmarks only: glFinish before and after every pass, so that CPU times measure each pass
+  /// to completion on lazy rasterisers (llvmpipe). It stalls the pipeline: never in a host frame.
+  bool finishPasses = false;
+  int shadowMapSize = 1024;  ///< pixels, square, per shadow-casting light
 };
 
 /// An intermediate target of the last frame, for inspection and CPU references.

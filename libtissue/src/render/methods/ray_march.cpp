@@ -144,9 +144,8 @@ Result<void> RayMarchMethod::draw(const FrameContext& frame, std::span<const Obj
     maps.push_back(*resolved);
   }
   const gl::GlApi& g = frame.gl;
-  // The pass is timed to completion: the earlier passes finish first, and the pass waits for its
-  // own fragments (llvmpipe rasterises lazily, so issuing alone would time nothing).
-  g.Finish();
+  // No glFinish here: a host's frame must not stall. Benchmarks time the pass to completion with
+  // RendererSettings::finishPasses (llvmpipe rasterises lazily, so issuing alone times nothing).
   return frame.passes.run("ray-march", [&]() -> Result<void> {
     beginGeometryPass(frame);
     for (std::size_t i = 0; i < objects.size(); ++i) {
@@ -163,7 +162,6 @@ Result<void> RayMarchMethod::draw(const FrameContext& frame, std::span<const Obj
       setObjectUniforms(frame, program, s, texelsWide);
       drawSurface(frame, program, d);
     }
-    g.Finish();
     return gl::checkGlError(g, "renderer: ray-march pass");
   });
 }

@@ -1,0 +1,25 @@
+#include "gl_environment.h"
+
+#include <cstdlib>
+#include <string>
+
+namespace tissue::sim_app {
+namespace {
+
+std::string environment(const char* name) {
+  const char* value = std::getenv(name);
+  return value ? value : "";
+}
+
+}  // namespace
+
+Result<std::unique_ptr<context::GlContext>> createAppContext(context::ContextRequest request, bool log) {
+  if (request.eglPlatform.empty()) request.eglPlatform = environment("TISSUE_EGL_PLATFORM");
+  return context::createHeadlessContext(request, {.backend = environment("TISSUE_GL_CONTEXT"), .log = log});
+}
+
+gl::ShaderLibrarySettings shaderSettingsFromEnvironment() {
+  return {.overrideDir = environment("TISSUE_SHADER_DIR")};
+}
+
+}  // namespace tissue::sim_app
