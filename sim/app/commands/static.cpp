@@ -4,6 +4,7 @@
 // (mm) per vertex in the mesh file's vertex order, atomically.
 #include <algorithm>
 #include <cstdio>
+#include <iostream>
 #include <numeric>
 
 #include "command.h"
@@ -44,6 +45,8 @@ int runStatic(const StaticOptions& o, const GlobalOptions& global) {
   if (o.maxIterations < 1) return fail("static", "--max-iterations: expected a positive integer");
   auto parsed = scenario::loadScenario(o.scenario, {.sharedMeshesDir = sharedDir() / "meshes"});
   if (!parsed) return fail("static", parsed.error().message);
+  for (const std::string& warning : parsed->warnings)  // e.g. a Poisson ratio springs cannot realise
+    std::cerr << "tissue-sim static: warning: " << warning << "\n";
   auto mesh = scenario::loadScenarioMesh(*parsed);
   if (!mesh) return fail("static", mesh.error().message);
   auto system = scenario::buildSystem(*parsed, *mesh);
