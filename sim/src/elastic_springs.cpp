@@ -2,6 +2,7 @@
 #include "tissue/sim/elastic_springs.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -135,7 +136,7 @@ Result<void> setLatticeStiffness(EmbeddedLattice& lattice, const ElasticMaterial
         if (it == index.end())
           return Error{"lattice cell " + std::to_string(c) + ": corners " + std::to_string(a) + " and " +
                        std::to_string(b) + " have no spring"};
-        const int kind = __builtin_popcount(static_cast<unsigned>(a ^ b));  // 1 edge, 2 face, 3 body
+        const int kind = std::popcount(static_cast<unsigned>(a ^ b));  // 1 edge, 2 face, 3 body
         if (boundary == LatticeBoundary::PerCell)
           k[it->second] += share[kind];
         else

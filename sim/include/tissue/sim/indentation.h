@@ -92,15 +92,18 @@ struct ElasticBlockConfig {
 /// Builds the block's nodes and springs. Fails on bad sizes or a bad material.
 Result<ElasticBlock> buildElasticBlock(const ElasticBlockConfig& config);
 
-/// Uniaxial compression of a cube of `config.cells` cells: bottom face on rollers (z held), top
-/// face on rollers moved down by `strain` times the height, one corner held in x and y and
-/// another in y (no rigid motion, no lateral constraint). E_eff = (F / A) / strain.
+/// What a uniaxial compression measured.
 struct UniaxialResult {
   double forceN = 0.0;             ///< N, the top face's reaction
   double effectiveModulusKpa = 0;  ///< kPa
   double modulusRatio = 0.0;       ///< E_eff / E configured
   double poissonRatio = 0.0;       ///< measured: -(lateral strain) / (axial strain), x faces
 };
+
+/// Uniaxial compression of a block of `config.cells` cells: bottom face on rollers (z held), top
+/// face on rollers moved down by `strain` (dimensionless, in (0, 0.5)) times the height, one corner
+/// held in x and y and another in y (no rigid motion, no lateral constraint; a clamped face would
+/// measure the larger constrained modulus). E_eff = (F / A) / strain.
 Result<UniaxialResult> measureUniaxial(const ElasticBlockConfig& config, double strain = 0.01);
 
 /// Hertz indentation of a quarter block by a rigid frictionless sphere.
