@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -149,6 +150,39 @@ TEST(ScenarioParse, SharedMeshesResolve) {
       kFile, {.sharedMeshesDir = shared});
   ASSERT_TRUE(s.ok()) << s.error().message;
   EXPECT_EQ(s->mesh, shared / "liver-smooth.obj");
+}
+
+TEST(ScenarioParse, TissueBlockOnTetsMeetsTheIsotropicProjectionIdentity) {
+  // k = 6 E V_t / sum_e l_e^2 on each tet's edges: summed over the mesh, sum_s k_s l_s^2 = 6 E V.
+  const std::filesystem::path msh = std::filesystem::path(TISSUE_TEST_SHARED_DIR) / "meshes" / "liver.msh";
+  if (!std::filesystem::exists(msh)) GTEST_SKIP() << "no shared liver.msh";
+  auto s = parseScenario(tissueScenario(R"({"youngs_modulus_kpa": 6})", R"({"from": "tet-edges"})",
+                                        R"("mesh_scale_to_mm": 25)", msh.string()),
+                         kFile);
+  ASSERT_TRUE(s.ok()) << s.error().message;
+  auto mesh = loadScenarioMesh(*s);
+  ASSERT_TRUE(mesh.ok()) << mesh.error().message;
+  auto system = buildSystem(*s, *mesh);
+  ASSERT_TRUE(system.ok()) << system.error().message;
+  double volume = 0.0;
+  for (const Tet& t : mesh->tets) {
+    const auto p = [&](int c) {
+      const Float3& q = mesh->positions[t[c]];
+      return sim::Vec3d{q.x, q.y, q.z};
+    };
+    const sim::Vec3d a = p(1) - p(0), b = p(2) - p(0), c = p(3) - p(0);
+    volume += std::abs(a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) +
+                       a.z * (b.x * c.y - b.y * c.x)) /
+              6.0;
+  }
+  double sumKL2 = 0.0, mass = 0.0;
+  const auto k = stiffnessNPerMm(system->springs);
+  for (std::size_t i = 0; i < k.size(); ++i)
+    sumKL2 += k[i] * system->springs.restLength[i] * system->springs.restLength[i];
+  for (double m : system->masses)
+    mass += m;
+  EXPECT_NEAR(sumKL2, 6.0 * 6.0e-3 * volume, 1e-4 * sumKL2);  // E = 6 kPa = 6e-3 N/mm^2
+  EXPECT_NEAR(mass, 1.06e-3 * volume, 1e-4 * mass);           // the tissue's density
 }
 
 struct BadCase {
