@@ -2,9 +2,13 @@
 // file and the key.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "tissue/scenario/scenario.h"
+#include "tissue/sim/units.h"
 
 namespace tissue::scenario {
 namespace {
@@ -32,6 +36,76 @@ std::string errorOf(const std::string& text) {
 }
 
 const std::string kSurface = R"({"from": "surface", "stiffness": 0.1})";
+
+/// A scenario with a tissue block and no springs.stiffness nor mass (the tissue's density).
+std::string tissueScenario(const std::string& tissue, const std::string& springs = R"({"from": "surface"})",
+                           const std::string& extra = "", const std::string& mesh = patchMesh()) {
+  return R"({"mesh": ")" + mesh + R"(", "springs": )" + springs + R"(, "tissue": )" + tissue +
+         (extra.empty() ? "" : ", " + extra) + "}";
+}
+
+/// The springs' stiffness in N/mm.
+std::vector<double> stiffnessNPerMm(const sim::SpringNetwork& springs) {
+  std::vector<double> k;
+  for (double v : springs.stiffness)
+    k.push_back(v / sim::kStiffnessPerNewtonPerMm);
+  return k;
+}
+
+TEST(ScenarioParse, TissueBlockMakesShellSpringsFromYoungsModulus) {
+  const std::string text =
+      tissueScenario(R"({"youngs_modulus_kpa": 5, "thickness_mm": 2, "bending_fraction": 0.1})");
+  auto s = parseScenario(text, kFile);
+  ASSERT_TRUE(s.ok()) << s.error().message;
+  ASSERT_TRUE(s->tissue.has_value());
+  EXPECT_DOUBLE_EQ(s->tissue->material.youngsModulusKpa, 5.0);
+  EXPECT_DOUBLE_EQ(s->mass.total, 0.0);
+  EXPECT_DOUBLE_EQ(s->mass.arealDensity, 1.06e-3 * 2.0);  // density times thickness, g/mm^2
+  EXPECT_TRUE(s->warnings.empty());
+  auto mesh = loadScenarioMesh(*s);
+  ASSERT_TRUE(mesh.ok());
+  auto system = buildSystem(*s, *mesh);
+  ASSERT_TRUE(system.ok()) << system.error().message;
+  // Twice the modulus, twice every spring (and the bending springs exist).
+  auto stiffer = parseScenario(tissueScenario(R"({"youngs_modulus_kpa": 10, "thickness_mm": 2})"), kFile);
+  ASSERT_TRUE(stiffer.ok());
+  auto system2 = buildSystem(*stiffer, *mesh);
+  ASSERT_TRUE(system2.ok());
+  const auto k1 = stiffnessNPerMm(system->springs), k2 = stiffnessNPerMm(system2->springs);
+  ASSERT_EQ(k1.size(), k2.size());
+  auto plain = parseScenario(scenarioWith(kSurface), kFile);
+  ASSERT_TRUE(plain.ok());
+  EXPECT_GT(k1.size(), buildSystem(*plain, *mesh)->springs.size());  // bending springs were built
+  for (std::size_t i = 0; i < k1.size(); ++i) {
+    EXPECT_GT(k1[i], 0.0);
+    EXPECT_NEAR(k2[i], 2.0 * k1[i], 1e-12 * k2[i]);
+  }
+}
+
+TEST(ScenarioParse, TissueBlockOnALatticeUsesTheCellFormulaAndTheDensity) {
+  const std::string liver = (std::filesystem::path(TISSUE_TEST_DATA_DIR) / "meshes" / "liver.obj").string();
+  auto s = parseScenario(tissueScenario(R"({"youngs_modulus_kpa": 4.5, "poisson_ratio": 0.45})",
+                                        R"({"from": "lattice"})", R"("lattice": {"cell_size": 16})", liver),
+                         kFile);
+  ASSERT_TRUE(s.ok()) << s.error().message;
+  EXPECT_DOUBLE_EQ(s->massVolumeDensity, 1.06e-3);
+  ASSERT_EQ(s->warnings.size(), 1u);  // nu = 0.45 is reported, the springs realise 0.25
+  EXPECT_NE(s->warnings[0].find("bad.json: tissue.poisson_ratio"), std::string::npos) << s->warnings[0];
+  auto mesh = loadScenarioMesh(*s);
+  ASSERT_TRUE(mesh.ok()) << mesh.error().message;
+  auto system = buildSystem(*s, *mesh);
+  ASSERT_TRUE(system.ok()) << system.error().message;
+  // Interior springs get k1 = k2 = mu a (mu = 2E/5); boundary ones a share; body diagonals 0.
+  const auto k = stiffnessNPerMm(system->springs);
+  const double interior = sim::latticeInteriorStiffness(4.5, 16.0).edge;
+  EXPECT_NEAR(*std::max_element(k.begin(), k.end()), interior, 1e-12);
+  EXPECT_NEAR(interior, 0.4 * 4.5e-3 * 16.0, 1e-15);
+  // Masses: the density times the filled volume.
+  double total = 0.0;
+  for (double m : system->masses)
+    total += m;
+  EXPECT_NEAR(total, 1.06e-3 * mesh->lattice->filledVolume, 1e-9 * total);
+}
 
 TEST(ScenarioParse, AGoodScenarioKeepsItsValuesAndUnits) {
   const std::string text = scenarioWith(
@@ -76,6 +150,39 @@ TEST(ScenarioParse, SharedMeshesResolve) {
       kFile, {.sharedMeshesDir = shared});
   ASSERT_TRUE(s.ok()) << s.error().message;
   EXPECT_EQ(s->mesh, shared / "liver-smooth.obj");
+}
+
+TEST(ScenarioParse, TissueBlockOnTetsMeetsTheIsotropicProjectionIdentity) {
+  // k = 6 E V_t / sum_e l_e^2 on each tet's edges: summed over the mesh, sum_s k_s l_s^2 = 6 E V.
+  const std::filesystem::path msh = std::filesystem::path(TISSUE_TEST_SHARED_DIR) / "meshes" / "liver.msh";
+  if (!std::filesystem::exists(msh)) GTEST_SKIP() << "no shared liver.msh";
+  auto s = parseScenario(tissueScenario(R"({"youngs_modulus_kpa": 6})", R"({"from": "tet-edges"})",
+                                        R"("mesh_scale_to_mm": 25)", msh.string()),
+                         kFile);
+  ASSERT_TRUE(s.ok()) << s.error().message;
+  auto mesh = loadScenarioMesh(*s);
+  ASSERT_TRUE(mesh.ok()) << mesh.error().message;
+  auto system = buildSystem(*s, *mesh);
+  ASSERT_TRUE(system.ok()) << system.error().message;
+  double volume = 0.0;
+  for (const Tet& t : mesh->tets) {
+    const auto p = [&](int c) {
+      const Float3& q = mesh->positions[t[c]];
+      return sim::Vec3d{q.x, q.y, q.z};
+    };
+    const sim::Vec3d a = p(1) - p(0), b = p(2) - p(0), c = p(3) - p(0);
+    volume += std::abs(a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) +
+                       a.z * (b.x * c.y - b.y * c.x)) /
+              6.0;
+  }
+  double sumKL2 = 0.0, mass = 0.0;
+  const auto k = stiffnessNPerMm(system->springs);
+  for (std::size_t i = 0; i < k.size(); ++i)
+    sumKL2 += k[i] * system->springs.restLength[i] * system->springs.restLength[i];
+  for (double m : system->masses)
+    mass += m;
+  EXPECT_NEAR(sumKL2, 6.0 * 6.0e-3 * volume, 1e-4 * sumKL2);  // E = 6 kPa = 6e-3 N/mm^2
+  EXPECT_NEAR(mass, 1.06e-3 * volume, 1e-4 * mass);           // the tissue's density
 }
 
 struct BadCase {
@@ -138,6 +245,28 @@ TEST(ScenarioParse, EveryBadScenarioNamesTheFileAndTheKey) {
            R"("instrument": {"shape": "sphere", "radius": 1, "path": [{"time": 0, "position": [0, 0, 0]}], "actions": [{"time": 1, "action": "pinch"}]})"),
        "instrument.actions[0].action: expected one of"},
       {"{\"mesh\": ", "bad.json: not valid JSON"},
+      // The tissue block (material constants).
+      {tissueScenario(R"({"youngs_modulus_kpa": -3})"),
+       "bad.json: tissue.youngs_modulus_kpa: expected a positive number (kPa), got -3"},
+      {tissueScenario(R"({"youngs_modulus_kpa": 5, "poisson_ratio": 0.5})"),
+       "bad.json: tissue.poisson_ratio: expected a number in (0, 0.5)"},
+      {tissueScenario(R"({"youngs_modulus_kpa": 5, "poisson_ratio": -0.1})"),
+       "tissue.poisson_ratio: expected"},
+      {tissueScenario(R"({"youngs_modulus_kpa": 5, "density_g_per_mm3": 0})"),
+       "tissue.density_g_per_mm3: expected a positive number (g/mm^3), got 0"},
+      {tissueScenario(R"({"youngs_modulus_kpa": 5, "thickness_mm": 0})"),
+       "tissue.thickness_mm: expected a positive number (mm), got 0"},
+      {tissueScenario(R"({"poisson_ratio": 0.3})"), "tissue.youngs_modulus_kpa: missing"},
+      {tissueScenario(R"({"youngs_modulus": 5})"), "tissue.youngs_modulus: unknown key"},
+      {tissueScenario(R"({"youngs_modulus_kpa": 5})", R"({"from": "surface", "stiffness": 0.1})"),
+       "springs.stiffness: give either springs.stiffness (per-spring values) or the tissue block"},
+      {tissueScenario(R"({"youngs_modulus_kpa": 5})", R"({"from": "surface", "bending_stiffness": 0.1})"),
+       "springs.bending_stiffness: give either"},
+      {tissueScenario(R"({"youngs_modulus_kpa": 5, "thickness_mm": 2})", R"({"from": "lattice"})",
+                      R"("lattice": {"cell_size": 5})"),
+       "tissue.thickness_mm: only for springs.from = \"surface\""},
+      {R"({"mesh": ")" + patchMesh() + R"(", "springs": {"from": "surface"}, "mass": {"total": 1}})",
+       "springs.stiffness: missing; give a positive number (N/mm), or a tissue block"},
   };
   for (const auto& c : cases) {
     const std::string error = errorOf(c.text);

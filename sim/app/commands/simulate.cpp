@@ -66,6 +66,8 @@ nlohmann::json summaryJson(const scenario::ScenarioRun& run, const scenario::Run
 int runSimulate(const SimulateOptions& o, const GlobalOptions& global) {
   auto parsed = scenario::loadScenario(o.scenario, {.sharedMeshesDir = sharedDir() / "meshes"});
   if (!parsed) return fail("simulate", parsed.error().message);
+  for (const std::string& warning : parsed->warnings)  // e.g. a Poisson ratio springs cannot realise
+    std::cerr << "tissue-sim simulate: warning: " << warning << "\n";
   if (o.frames > 0) parsed->frames = o.frames;
   auto run = scenario::ScenarioRun::create(*parsed);
   if (!run) return fail("simulate", run.error().message);

@@ -4,6 +4,7 @@
 // (mm) per vertex in the mesh file's vertex order, atomically.
 #include <algorithm>
 #include <cstdio>
+#include <iostream>
 #include <numeric>
 
 #include "command.h"
@@ -44,13 +45,16 @@ int runStatic(const StaticOptions& o, const GlobalOptions& global) {
   if (o.maxIterations < 1) return fail("static", "--max-iterations: expected a positive integer");
   auto parsed = scenario::loadScenario(o.scenario, {.sharedMeshesDir = sharedDir() / "meshes"});
   if (!parsed) return fail("static", parsed.error().message);
+  for (const std::string& warning : parsed->warnings)  // e.g. a Poisson ratio springs cannot realise
+    std::cerr << "tissue-sim static: warning: " << warning << "\n";
   auto mesh = scenario::loadScenarioMesh(*parsed);
   if (!mesh) return fail("static", mesh.error().message);
   auto system = scenario::buildSystem(*parsed, *mesh);
   if (!system) return fail("static", system.error().message);
 
   Stopwatch clock;
-  std::vector<sim::Vec3d> x = sim::restState(mesh->positions).x;
+  // A lattice scenario simulates the lattice nodes; the surface follows by the embedding.
+  std::vector<sim::Vec3d> x = sim::restState(mesh->simulatedRestPositions()).x;
   const auto report =
       sim::solveStatic(*system, x, {.toleranceN = o.toleranceN, .maxIterations = o.maxIterations});
   const double ms = clock.elapsedMs();
@@ -60,11 +64,17 @@ int runStatic(const StaticOptions& o, const GlobalOptions& global) {
                     std::to_string(report.iterations) + " iterations (residual " +
                     std::to_string(report.residualN) +
                     " N); raise --max-iterations or --tolerance, or pin the mesh so it cannot drift");
-  if (auto ok = writeTextFileAtomic(o.out, positionLines(x, mesh->fileIndex)); !ok)
+  std::vector<sim::Vec3d> surface = x;
+  if (mesh->lattice) {
+    std::vector<Float3> embedded(mesh->positions.size());
+    sim::embedPositions(*mesh->lattice, x, embedded);
+    surface = sim::restState(embedded).x;
+  }
+  if (auto ok = writeTextFileAtomic(o.out, positionLines(surface, mesh->fileIndex)); !ok)
     return fail("static", ok.error().message);
   printResult(global, {{"scenario", o.scenario},
                        {"out", o.out},
-                       {"vertices", x.size()},
+                       {"vertices", surface.size()},
                        {"converged", report.converged},
                        {"iterations", report.iterations},
                        {"accepted_steps", report.acceptedSteps},

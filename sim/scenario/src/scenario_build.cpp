@@ -4,6 +4,7 @@
 
 #include "tissue/mesh/load_mesh.h"
 #include "tissue/scenario/scenario.h"
+#include "tissue/sim/elastic_springs.h"
 #include "tissue/sim/tet_springs.h"
 
 namespace tissue::scenario {
@@ -37,6 +38,14 @@ Result<std::vector<std::uint32_t>> pinnedVertices(const Scenario& s, const Scena
                           s.mesh.string() + " (" + std::to_string(mesh.positions.size()) + " used vertices)");
     out.push_back(it->second);
   }
+  return out;
+}
+
+std::vector<sim::Vec3d> restPositions(const std::vector<Float3>& positions) {
+  std::vector<sim::Vec3d> out;
+  out.reserve(positions.size());
+  for (const Float3& p : positions)
+    out.push_back({p.x, p.y, p.z});
   return out;
 }
 
@@ -75,13 +84,26 @@ Result<ScenarioMesh> loadScenarioMesh(const Scenario& s) {
 Result<sim::SpringNetwork> buildSpringsFromScenario(const Scenario& s, const ScenarioMesh& mesh) {
   switch (s.springSource) {
     case SpringSource::Surface: {
-      auto springs = sim::buildSurfaceSprings(mesh.positions, mesh.triangles, s.springs);
+      sim::SpringConfig config = s.springs;
+      // With a tissue block the builder makes the springs and elastic_springs sets their k.
+      if (s.tissue) config.bendingStiffness = s.tissue->shell.bendingFraction > 0.0 ? 1.0 : 0.0;
+      auto springs = sim::buildSurfaceSprings(mesh.positions, mesh.triangles, config);
       if (!springs) return keyError(s, "springs", springs.error().message);
+      if (s.tissue)
+        if (auto ok = sim::setSurfaceStiffness(*springs, restPositions(mesh.positions), mesh.triangles,
+                                               s.tissue->material, s.tissue->shell);
+            !ok)
+          return keyError(s, "tissue", ok.error().message);
       return springs;
     }
     case SpringSource::TetEdges: {
       auto springs = sim::buildTetEdgeSprings(mesh.positions, mesh.tets, s.springs);
       if (!springs) return keyError(s, "springs", springs.error().message);
+      if (s.tissue)
+        if (auto ok = sim::setTetEdgeStiffness(*springs, restPositions(mesh.positions), mesh.tets,
+                                               s.tissue->material);
+            !ok)
+          return keyError(s, "tissue", ok.error().message);
       return springs;
     }
     case SpringSource::Lattice:

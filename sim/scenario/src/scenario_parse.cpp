@@ -101,7 +101,7 @@ std::filesystem::path resolveMesh(const json& v, const std::filesystem::path& fi
                      "; paths are relative to the scenario's folder or to the shared meshes"};
 }
 
-void parseSprings(const json& s, Scenario& out) {
+void parseSprings(const json& s, bool tissue, Scenario& out) {
   checkObject(s, "springs", {"from", "stiffness", "stiffness_law", "bending_stiffness"});
   if (!s.contains("from"))
     throw KeyError{"springs.from", "missing; give \"surface\", \"tet-edges\" or \"lattice\""};
@@ -109,24 +109,83 @@ void parseSprings(const json& s, Scenario& out) {
   out.springSource = from == "surface"     ? SpringSource::Surface
                      : from == "tet-edges" ? SpringSource::TetEdges
                                            : SpringSource::Lattice;
+  if (tissue) {  // the stiffness comes from the tissue block's material constants
+    for (const char* key : {"stiffness", "stiffness_law", "bending_stiffness"})
+      if (s.contains(key))
+        throw KeyError{std::string("springs.") + key,
+                       "give either springs." + std::string(key) +
+                           " (per-spring values) or the tissue block (material constants), not both"};
+    return;
+  }
   std::string law = "constant";
   if (s.contains("stiffness_law"))
     law = text(s["stiffness_law"], "springs.stiffness_law", {"constant", "per-rest-length"});
   out.springs.law = law == "constant" ? sim::StiffnessLaw::Constant : sim::StiffnessLaw::PerRestLength;
   const std::string unit = law == "constant" ? "N/mm" : "N";
   if (!s.contains("stiffness"))
-    throw KeyError{"springs.stiffness", "missing; give a positive number (" + unit + ")"};
+    throw KeyError{"springs.stiffness", "missing; give a positive number (" + unit +
+                                            "), or a tissue block {\"youngs_modulus_kpa\": kPa}"};
   out.springs.stiffness = positive(s["stiffness"], "springs.stiffness", unit);
   if (s.contains("bending_stiffness"))
     out.springs.bendingStiffness = nonNegative(s["bending_stiffness"], "springs.bending_stiffness", unit);
 }
 
+/// The tissue block: E (kPa, required), nu, density (g/mm^3), thickness (mm) and bending fraction
+/// (surface only).
+void parseTissue(const json& t, Scenario& out) {
+  checkObject(
+      t, "tissue",
+      {"youngs_modulus_kpa", "poisson_ratio", "density_g_per_mm3", "thickness_mm", "bending_fraction"});
+  TissueSpec spec;
+  if (!t.contains("youngs_modulus_kpa"))
+    throw KeyError{"tissue.youngs_modulus_kpa", "missing; give Young's modulus in kPa (liver about 5)"};
+  spec.material.youngsModulusKpa = positive(t["youngs_modulus_kpa"], "tissue.youngs_modulus_kpa", "kPa");
+  if (t.contains("poisson_ratio")) {
+    const json& v = t["poisson_ratio"];
+    const double nu = v.is_number() ? v.get<double>() : -1.0;
+    if (!v.is_number() || !(nu > 0.0 && nu < 0.5))
+      throw KeyError{
+          "tissue.poisson_ratio",
+          "expected a number in (0, 0.5) (0.5, incompressible, is not reachable), got " + shown(v)};
+    spec.material.poissonRatio = nu;
+    if (nu != sim::kEffectivePoissonRatio)
+      out.warnings.push_back(out.file.string() + ": tissue.poisson_ratio: " + shown(v) +
+                             " is reported but not realised; the springs' effective Poisson's ratio is 0.25 "
+                             "(central forces, the Cauchy relation)");
+  }
+  if (t.contains("density_g_per_mm3"))
+    spec.material.densityGPerMm3 = positive(t["density_g_per_mm3"], "tissue.density_g_per_mm3", "g/mm^3");
+  const bool surface = out.springSource == SpringSource::Surface;
+  for (const char* key : {"thickness_mm", "bending_fraction"})
+    if (t.contains(key) && !surface)
+      throw KeyError{std::string("tissue.") + key,
+                     "only for springs.from = \"surface\" (a shell); a volume needs no thickness"};
+  if (t.contains("thickness_mm"))
+    spec.shell.thicknessMm = positive(t["thickness_mm"], "tissue.thickness_mm", "mm");
+  if (t.contains("bending_fraction"))
+    spec.shell.bendingFraction =
+        nonNegative(t["bending_fraction"], "tissue.bending_fraction", "fraction of the edge spring");
+  out.tissue = spec;
+}
+
+/// Without a mass key, the tissue's density: per volume, or times the shell's thickness per area.
+void massFromTissue(Scenario& out) {
+  out.mass.total = 0.0;
+  if (out.springSource == SpringSource::Surface)
+    out.mass.arealDensity = out.tissue->material.densityGPerMm3 * out.tissue->shell.thicknessMm;
+  else
+    out.massVolumeDensity = out.tissue->material.densityGPerMm3;
+}
+
 void parseMass(const json& m, Scenario& out) {
   checkObject(m, "mass", {"total", "density", "distribution"});
-  if (m.contains("total") == m.contains("density"))
+  if (out.tissue && !m.contains("total") && !m.contains("density")) {
+    massFromTissue(out);  // e.g. {"distribution": "uniform"} with the tissue's density
+  } else if (m.contains("total") == m.contains("density")) {
     throw KeyError{"mass",
                    "give exactly one of total (g) and density (g/mm^2 for surface springs, g/mm^3 for "
                    "tet-edges and lattice)"};
+  }
   const bool volume = out.springSource != SpringSource::Surface;
   out.mass.total = m.contains("total") ? positive(m["total"], "mass.total", "g") : 0.0;
   if (m.contains("density")) {
@@ -251,8 +310,8 @@ void parseInstrument(const json& j, Scenario& out) {
 void parseTopLevel(const json& j, const std::filesystem::path& file, const ScenarioPaths& paths,
                    Scenario& out) {
   checkObject(j, "",
-              {"description", "mesh", "mesh_scale_to_mm", "springs", "lattice", "mass", "damping", "gravity",
-               "pinned", "integrator", "dt", "substeps", "frames", "solver", "instrument"});
+              {"description", "mesh", "mesh_scale_to_mm", "springs", "tissue", "lattice", "mass", "damping",
+               "gravity", "pinned", "integrator", "dt", "substeps", "frames", "solver", "instrument"});
   if (j.contains("description") && !j["description"].is_string())
     throw KeyError{"description", "expected a string, got " + shown(j["description"])};
   if (!j.contains("mesh")) throw KeyError{"mesh", "missing; give the path of the mesh"};
@@ -261,7 +320,8 @@ void parseTopLevel(const json& j, const std::filesystem::path& file, const Scena
     out.meshScaleToMm = positive(j["mesh_scale_to_mm"], "mesh_scale_to_mm", "mm per file unit");
   if (!j.contains("springs"))
     throw KeyError{"springs", "missing; give {\"from\": \"surface\", \"stiffness\": N/mm}"};
-  parseSprings(j["springs"], out);
+  parseSprings(j["springs"], j.contains("tissue"), out);
+  if (j.contains("tissue")) parseTissue(j["tissue"], out);
   if (j.contains("lattice")) {
     if (out.springSource != SpringSource::Lattice)
       throw KeyError{"lattice", "only used with springs.from = \"lattice\""};
@@ -272,8 +332,12 @@ void parseTopLevel(const json& j, const std::filesystem::path& file, const Scena
   } else if (out.springSource == SpringSource::Lattice) {
     throw KeyError{"lattice", "missing; springs.from = \"lattice\" needs {\"cell_size\": mm}"};
   }
-  if (!j.contains("mass")) throw KeyError{"mass", "missing; give {\"total\": g} or {\"density\": ...}"};
-  parseMass(j["mass"], out);
+  if (j.contains("mass"))
+    parseMass(j["mass"], out);
+  else if (out.tissue)
+    massFromTissue(out);
+  else
+    throw KeyError{"mass", "missing; give {\"total\": g} or {\"density\": ...}, or a tissue block"};
   if (j.contains("damping")) parseDamping(j["damping"], out);
   if (j.contains("gravity")) out.system.gravity = vec3(j["gravity"], "gravity", "mm/s^2");
   if (j.contains("pinned")) parsePinned(j["pinned"], out);

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "tissue/scenario/scenario.h"
+#include "tissue/sim/elastic_springs.h"
 #include "tissue/volume/tet_mesh.h"
 
 namespace tissue::scenario {
@@ -49,6 +50,9 @@ Result<void> attachLattice(const Scenario& s, ScenarioMesh& mesh) {
   config.mass = volumeMassConfig(s);
   auto lattice = sim::buildEmbeddedLattice(mesh.positions, mesh.triangles, config);
   if (!lattice) return keyError(s, "springs.from", "\"lattice\": " + lattice.error().message);
+  if (s.tissue)  // springs from E: assembled cell by cell (tissue/sim/elastic_springs.h)
+    if (auto ok = sim::setLatticeStiffness(*lattice, s.tissue->material); !ok)
+      return keyError(s, "tissue", ok.error().message);
   mesh.lattice = std::move(*lattice);
   return {};
 }

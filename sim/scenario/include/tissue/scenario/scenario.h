@@ -14,6 +14,7 @@
 
 #include "tissue/core/result.h"
 #include "tissue/core/surface_mesh.h"
+#include "tissue/sim/elastic_springs.h"
 #include "tissue/sim/instrument.h"
 #include "tissue/sim/integrators.h"
 #include "tissue/sim/lattice.h"
@@ -50,6 +51,13 @@ struct InstrumentSpec {
   std::vector<InstrumentAction> actions;  ///< sorted by time
 };
 
+/// The "tissue" block: spring stiffness from material constants instead of springs.stiffness
+/// (tissue/sim/elastic_springs.h; docs/SCENARIOS.md).
+struct TissueSpec {
+  sim::ElasticMaterial material{};  ///< E in kPa, nu (validated, reported; the springs realise 1/4), g/mm^3
+  sim::ShellConfig shell{};         ///< thickness (mm) and bending fraction, springs.from = "surface" only
+};
+
 /// A parsed scenario (all units as in docs/SCENARIOS.md; springs in N/mm or N, as SpringConfig).
 struct Scenario {
   std::filesystem::path file;  ///< the scenario file (for messages)
@@ -69,6 +77,11 @@ struct Scenario {
   int frames = 60;
   sim::ImplicitSolverConfig solver{};
   std::optional<InstrumentSpec> instrument;
+  /// Set by the "tissue" block: springs from E (springs.stiffness is then not given).
+  std::optional<TissueSpec> tissue;
+  /// Lines to show the user (the commands print each on stderr), e.g. a Poisson's ratio that
+  /// the springs cannot realise. Each names the file and the key.
+  std::vector<std::string> warnings;
 };
 
 /// Where relative mesh paths may live besides the scenario's folder.
