@@ -306,17 +306,18 @@ StepStats stepFastMassSpring(const MassSpringSystem& system, State& state, doubl
   constantRightHandSide(system, state, h, c);
 
   // Fixed iterations, or fewer once converged: an iteration that moves no free vertex by more
-  // than relativeTolerance times the step's largest displacement is the last (at small h the
+  // than localGlobalTolerance times the step's largest displacement is the last (at small h the
   // inertial prediction is nearly the answer and one or two suffice).
   const std::size_t rows0 = c.freeVertices.size();
-  const double tol2 = solver.relativeTolerance * solver.relativeTolerance;
+  const double tol2 = solver.localGlobalTolerance * solver.localGlobalTolerance;
   for (int it = 0; it < std::max(1, solver.localGlobalIterations); ++it) {
     c.previous.resize(rows0);
-    for (std::size_t r = 0; r < rows0; ++r)
+    for (std::size_t r = 0; r < rows0 && tol2 > 0.0; ++r)
       c.previous[r] = state.x[c.freeVertices[r]];
     localStep(system, state.x, c);
     globalStep(system, h, c, state.x);
     stats.localGlobalIterations = it + 1;
+    if (tol2 == 0.0) continue;
     double change = 0.0, scale = 0.0;
     for (std::size_t r = 0; r < rows0; ++r) {
       const std::uint32_t v = c.freeVertices[r];

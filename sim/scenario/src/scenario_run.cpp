@@ -41,6 +41,8 @@ Result<std::unique_ptr<ScenarioRun>> ScenarioRun::create(const Scenario& scenari
                               .frameTime = scenario.frameTime,
                               .substeps = scenario.substeps,
                               .solver = scenario.solver};
+  // solver.tolerance also ends the fast solver's local/global iterations early (docs/SCENARIOS.md).
+  config.solver.localGlobalTolerance = scenario.solver.relativeTolerance;
   auto simulator =
       sim::Simulator::create(std::move(*system), sim::restState(mesh->simulatedRestPositions()), config);
   if (!simulator) return Error{scenario.file.string() + ": " + simulator.error().message};

@@ -33,11 +33,11 @@ std::optional<Integrator> parseIntegrator(std::string_view name);
 /// local/global iterations.
 struct ImplicitSolverConfig {
   int maxIterations = 200;  ///< conjugate-gradient iterations per step (implicit Euler)
-  /// Implicit Euler: CG stops when |residual| <= tolerance * |right-hand side|. Fast-mass-spring:
-  /// the local/global iterations stop once one moves no vertex by more than tolerance times the
-  /// step's largest displacement (unitless).
-  double relativeTolerance = 1e-10;
-  int localGlobalIterations = 10;  ///< fast-mass-spring: local/global iterations per step (at most)
+  double relativeTolerance = 1e-10;  ///< stop when |residual| <= tolerance * |right-hand side|
+  int localGlobalIterations = 10;    ///< fast-mass-spring: local/global iterations per step (at most)
+  /// fast-mass-spring: stop the iterations early once one moves no vertex by more than this
+  /// times the step's largest displacement (unitless); 0 runs all localGlobalIterations.
+  double localGlobalTolerance = 0.0;
 };
 
 /// What one step did.
