@@ -214,11 +214,11 @@ struct LatticeOrgan {
 
 LatticeOrgan latticeOrgan(const SystemConfig& config, double pinBelow = -1e9) {
   LatticeOrgan o;
-  o.lattice = buildEmbeddedLattice(o.surface.positions, o.surface.triangles,
-                                   {.cellSize = 5.0,
-                                    .springs = {.stiffness = 0.002, .damping = 1e-6},
-                                    .mass = {.density = 1e-3}})
-                  .value();
+  o.lattice =
+      buildEmbeddedLattice(
+          o.surface.positions, o.surface.triangles,
+          {.cellSize = 5.0, .springs = {.stiffness = 0.002, .damping = 1e-6}, .mass = {.density = 1e-3}})
+          .value();
   std::vector<std::uint32_t> pinned;
   for (std::uint32_t n = 0; n < o.lattice.nodeCount(); ++n)
     if (o.lattice.nodePositions[n].z < pinBelow) pinned.push_back(n);
@@ -249,11 +249,12 @@ TEST(Instrument, LatticePokePushesTheEmbeddedSurfaceOutOfTheTool) {
   const LatticeOrgan o = latticeOrgan({.gravity = {}}, -12.0);
   Simulator sim = latticeSimulator(o);
   const double radius = 6.0;
-  std::vector<ToolKeyframe> path{{0.0, {{0.0, 0.0, 27.0}}}, {0.1, {{0.0, 0.0, 27.0}}},
-                                 {0.6, {{0.0, 0.0, 18.0}}}};
+  std::vector<ToolKeyframe> path{
+      {0.0, {{0.0, 0.0, 27.0}}}, {0.1, {{0.0, 0.0, 27.0}}}, {0.6, {{0.0, 0.0, 18.0}}}};
   auto tool = Instrument::create({.shape = {ToolShapeKind::Sphere, radius}}, path);
   ASSERT_TRUE(tool.ok());
-  ASSERT_TRUE(tool->setEmbedding({o.lattice.vertexNodes, o.lattice.vertexWeights}, o.lattice.nodeCount()).ok());
+  ASSERT_TRUE(
+      tool->setEmbedding({o.lattice.vertexNodes, o.lattice.vertexWeights}, o.lattice.nodeCount()).ok());
   sim.setSubstepHook(&*tool);
   const double tolerance = tool->config().contactToleranceFraction * radius;
   for (int f = 0; f < 60; ++f) {
@@ -271,8 +272,8 @@ TEST(Instrument, LatticePokePushesTheEmbeddedSurfaceOutOfTheTool) {
     ASSERT_EQ(r.forceSamplesN.size(), 17u);
   }
   const InstrumentFrameReport r = tool->lastFrame();
-  EXPECT_GT(r.contacts, 3u);      // surface vertices, not nodes
-  EXPECT_GT(r.forceN.z, 0.0);     // the compressed ball pushes the tool up
+  EXPECT_GT(r.contacts, 3u);                           // surface vertices, not nodes
+  EXPECT_GT(r.forceN.z, 0.0);                          // the compressed ball pushes the tool up
   EXPECT_LT(std::abs(r.forceN.x), 0.05 * r.forceN.z);  // the poke is symmetric
   // The top of the ball is pressed down, the bottom held by the pins.
   EXPECT_LT(surfaceOf(o, sim.state())[0].z, 20.5);
@@ -291,7 +292,8 @@ TEST(Instrument, LatticeContactForceIsTheReactionToTheNodesMomentum) {
     totalMass += m;
   auto tool = Instrument::createLive({.shape = {ToolShapeKind::Sphere, 60.0}}, {{0.0, 0.0, -81.0}});
   ASSERT_TRUE(tool.ok());
-  ASSERT_TRUE(tool->setEmbedding({o.lattice.vertexNodes, o.lattice.vertexWeights}, o.lattice.nodeCount()).ok());
+  ASSERT_TRUE(
+      tool->setEmbedding({o.lattice.vertexNodes, o.lattice.vertexWeights}, o.lattice.nodeCount()).ok());
   sim.setSubstepHook(&*tool);
   const double T = 1.0 / 60.0;
   const double weightN = totalMass * kStandardGravity / kForcePerNewton;
@@ -325,7 +327,8 @@ TEST(Instrument, LatticeGraspTakesTheCarryingNodesAndTheSurfaceFollowsRigidly) {
   const ToolPose start{{0.0, 0.0, 24.0}};
   auto tool = Instrument::createLive({.shape = {ToolShapeKind::Sphere, 3.0}, .graspMarginMm = 1.5}, start);
   ASSERT_TRUE(tool.ok());
-  ASSERT_TRUE(tool->setEmbedding({o.lattice.vertexNodes, o.lattice.vertexWeights}, o.lattice.nodeCount()).ok());
+  ASSERT_TRUE(
+      tool->setEmbedding({o.lattice.vertexNodes, o.lattice.vertexWeights}, o.lattice.nodeCount()).ok());
   sim.setSubstepHook(&*tool);
   // The surface vertices within 4.5 mm of the tool centre: the top cap of the ball.
   std::vector<std::uint32_t> near;

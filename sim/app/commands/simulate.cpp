@@ -21,7 +21,8 @@ namespace {
 struct SimulateOptions {
   std::string scenario;
   std::string outDir;
-  int frames = 0;  ///< 0: the scenario's
+  int frames = 0;          ///< 0: the scenario's
+  std::string integrator;  ///< empty: the scenario's
   bool images = false;
 };
 
@@ -92,6 +93,14 @@ int runSimulate(const SimulateOptions& o, const GlobalOptions& global) {
   auto parsed = scenario::loadScenario(o.scenario, {.sharedMeshesDir = sharedDir() / "meshes"});
   if (!parsed) return fail("simulate", parsed.error().message);
   if (o.frames > 0) parsed->frames = o.frames;
+  if (!o.integrator.empty()) {
+    const auto integrator = sim::parseIntegrator(o.integrator);
+    if (!integrator)
+      return fail("simulate", "--integrator: unknown integrator \"" + o.integrator +
+                                  "\"; give explicit-euler, symplectic-euler, verlet, implicit-euler or "
+                                  "fast-mass-spring");
+    parsed->integrator = *integrator;
+  }
   auto run = scenario::ScenarioRun::create(*parsed);
   if (!run) return fail("simulate", run.error().message);
   const std::filesystem::path out =
@@ -133,6 +142,7 @@ void registerSimulateCommand(CLI::App& app, const GlobalOptions& global, int& ex
   cmd->add_option("scenario", o->scenario, "scenario file (JSON, docs/SCENARIOS.md)")->required();
   cmd->add_option("--out", o->outDir, "output folder (default out/<scenario name>)");
   cmd->add_option("--frames", o->frames, "frames to run instead of the scenario's");
+  cmd->add_option("--integrator", o->integrator, "integrator instead of the scenario's (to compare them)");
   cmd->add_flag("--images", o->images, "also render the last frame (needs UVs and a material file)");
   cmd->callback([o, &global, &exitCode] { exitCode = runSimulate(*o, global); });
 }

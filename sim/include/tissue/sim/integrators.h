@@ -32,7 +32,7 @@ std::optional<Integrator> parseIntegrator(std::string_view name);
 /// Settings of the implicit solvers: implicit Euler's conjugate gradients and the fast solver's
 /// local/global iterations.
 struct ImplicitSolverConfig {
-  int maxIterations = 200;  ///< conjugate-gradient iterations per step (implicit Euler)
+  int maxIterations = 200;           ///< conjugate-gradient iterations per step (implicit Euler)
   double relativeTolerance = 1e-10;  ///< stop when |residual| <= tolerance * |right-hand side|
   int localGlobalIterations = 10;    ///< fast-mass-spring: local/global iterations per step (at most)
   /// fast-mass-spring: stop the iterations early once one moves no vertex by more than this
