@@ -50,7 +50,8 @@ int runStatic(const StaticOptions& o, const GlobalOptions& global) {
   if (!system) return fail("static", system.error().message);
 
   Stopwatch clock;
-  std::vector<sim::Vec3d> x = sim::restState(mesh->positions).x;
+  // The simulated vertices: the lattice nodes for springs.from = "lattice" (the surface follows).
+  std::vector<sim::Vec3d> x = sim::restState(mesh->simulatedRestPositions()).x;
   const auto report =
       sim::solveStatic(*system, x, {.toleranceN = o.toleranceN, .maxIterations = o.maxIterations});
   const double ms = clock.elapsedMs();
@@ -60,6 +61,11 @@ int runStatic(const StaticOptions& o, const GlobalOptions& global) {
                     std::to_string(report.iterations) + " iterations (residual " +
                     std::to_string(report.residualN) +
                     " N); raise --max-iterations or --tolerance, or pin the mesh so it cannot drift");
+  if (mesh->lattice) {
+    std::vector<Float3> surface(mesh->positions.size());
+    sim::embedPositions(*mesh->lattice, x, surface);
+    x = sim::restState(surface).x;
+  }
   if (auto ok = writeTextFileAtomic(o.out, positionLines(x, mesh->fileIndex)); !ok)
     return fail("static", ok.error().message);
   printResult(global, {{"scenario", o.scenario},
