@@ -6,8 +6,10 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "tissue/core/result.h"
+#include "tissue/sim/integrators.h"
 #include "tissue/sim/system.h"
 
 namespace tissue::sim_app {
@@ -18,6 +20,19 @@ struct FramePathOptions {
   int frames = 30;             ///< frames simulated per integrator (1/60 s each)
   int threads = 2;             ///< threads of the simulator and the mesh update
 };
+
+/// Settings of the scenario measurement.
+struct ScenarioBenchOptions {
+  std::filesystem::path scenario;         ///< scenario file (default data/scenarios/liver_poke_grasp.json)
+  std::filesystem::path sharedMeshesDir;  ///< ../shared/meshes, for relative mesh paths
+  int frames = 0;                         ///< 0: the scenario's
+  std::optional<sim::Integrator> integrator;  ///< instead of the scenario's
+};
+
+/// Runs a scenario as `simulate` does (contact and grasp included) and reports ms per frame
+/// and per substep (median, p99, max), the force-update rate (Hz: force samples per simulated
+/// second), divergence events, degraded frames, the largest force (N) and refactoring (ms).
+Result<nlohmann::json> measureScenario(const ScenarioBenchOptions& options);
 
 /// A bound on the largest natural angular frequency (rad/s) of `system` at rest, by
 /// Gershgorin on M^-1/2 K M^-1/2: omega^2 <= max_i sum over i's springs k (1/m_i + 1/sqrt(m_i m_j)).

@@ -48,6 +48,37 @@ Vec3d toolPointVelocity(const ToolPose& previous, const ToolPose& current, doubl
   return (1.0 / dt) * (x - before);
 }
 
+Vec3d pushOutOfTool(const ToolShape& shape, const ToolPose& pose, const Vec3d& motion, const Vec3d& point,
+                    Vec3d& normal) {
+  const double r = shape.radius, r2 = r * r;
+  Vec3d x = point;
+  Vec3d core = closestCorePoint(shape, pose, x);
+  Vec3d d = x - core;
+  // A moving tool pushes the points it swept ahead along its motion, onto its leading surface,
+  // so that they keep their place across the motion instead of sliding round the tool within
+  // one step (the springs, not the projection, move them sideways). A point the sub-move swept
+  // was outside at the previous pose: |d + s u| >= r > |d| with u the unit motion and s its
+  // length gives d.u > -s/2. A point deeper behind the core (tissue following a retracting
+  // tool) was not swept and leaves radially; pushing it through to the leading side would
+  // pull the tissue along with the tool.
+  const double s = length(motion);
+  if (s > 1e-9 * r && dot(d, d) < r2) {
+    const Vec3d direction = (1.0 / s) * motion;
+    const double b = dot(d, direction), c = dot(d, d) - r2;
+    if (b > -0.5 * s) {
+      x += (-b + std::sqrt(std::max(0.0, b * b - c))) * direction;
+      core = closestCorePoint(shape, pose, x);
+      d = x - core;
+    }
+  }
+  // Then radially (a capsule's core point moves along the ray; a resting tool pushes radially).
+  // A point exactly on the core leaves along +x (any direction is as good; sub-moves shorter
+  // than the radius keep points off the core).
+  normal = normalizedOr(d, Vec3d{1.0, 0.0, 0.0});
+  if (dot(d, d) < r2) x = core + r * normal;
+  return x;
+}
+
 ProjectionResult projectOutOfTool(const ToolShape& shape, const ToolPose& pose, const ToolPose& previous,
                                   double dt, std::span<const double> mass, std::span<const double> invMass,
                                   std::span<Vec3d> x, std::span<Vec3d> v) {
@@ -57,28 +88,13 @@ ProjectionResult projectOutOfTool(const ToolShape& shape, const ToolPose& pose, 
   const double reach = r + 0.5 * (shape.kind == ToolShapeKind::Capsule ? shape.length : 0.0);
   const double reach2 = reach * reach;
   const Vec3d motion = pose.position - previous.position;
-  const bool moving = length(motion) > 1e-9 * r;
-  const Vec3d direction = normalizedOr(motion);
   for (std::size_t k = 0; k < x.size(); ++k) {
     const Vec3d fromCentre = x[k] - pose.position;
     if (dot(fromCentre, fromCentre) >= reach2 || invMass[k] == 0.0) continue;
-    Vec3d core = closestCorePoint(shape, pose, x[k]);
-    Vec3d d = x[k] - core;
+    const Vec3d d = x[k] - closestCorePoint(shape, pose, x[k]);
     if (dot(d, d) >= r2) continue;
-    // A moving tool pushes the point ahead along its motion, onto its leading surface, so that
-    // the points it sweeps keep their place across the motion instead of sliding round the tool
-    // within one step (the springs, not the projection, move them sideways).
-    if (moving) {
-      const double b = dot(d, direction), c = dot(d, d) - r2;
-      x[k] += (-b + std::sqrt(std::max(0.0, b * b - c))) * direction;
-      core = closestCorePoint(shape, pose, x[k]);
-      d = x[k] - core;
-    }
-    // Then radially (a capsule's core point moves along the ray; a resting tool pushes radially).
-    // A point exactly on the core leaves along +x (any direction is as good; sub-moves shorter
-    // than the radius keep points off the core).
-    const Vec3d n = normalizedOr(d, Vec3d{1.0, 0.0, 0.0});
-    if (dot(d, d) < r2) x[k] = core + r * n;
+    Vec3d n;
+    x[k] = pushOutOfTool(shape, pose, motion, x[k], n);
     // Remove the inward normal velocity relative to the tool's surface point.
     const Vec3d u = toolPointVelocity(previous, pose, dt, x[k]);
     const double vn = dot(v[k] - u, n);

@@ -41,6 +41,7 @@ struct FastSolverCache::Impl {
   struct Key {
     double h = 0.0, alpha = 0.0, beta = 0.0;
     std::uint64_t fingerprint = 0;
+    bool revision = false;  ///< `fingerprint` is the caller's system revision
     bool operator==(const Key&) const = default;
   };
   std::optional<Key> key;
@@ -52,14 +53,14 @@ struct FastSolverCache::Impl {
   std::vector<double> weight;                  ///< per spring: (h^2 + h beta) k + h c (g)
   std::vector<double> invD;                    ///< 1 / D of the LDL^T factor
   Eigen::MatrixX3d rhs, solution;
-  std::vector<Vec3d> base, perSpring, perVertex, x0, work;
+  std::vector<Vec3d> base, perSpring, perVertex, x0, work, previous;
 };
 
 FastSolverCache::FastSolverCache() = default;
 FastSolverCache::~FastSolverCache() = default;
-FastSolverCache::FastSolverCache(const FastSolverCache&) {}
+FastSolverCache::FastSolverCache(const FastSolverCache&) {}  // starts empty, fingerprinting
 FastSolverCache& FastSolverCache::operator=(const FastSolverCache& other) {
-  if (this != &other) m_impl.reset();
+  if (this != &other) m_impl.reset(), m_revision = 0;
   return *this;
 }
 FastSolverCache::FastSolverCache(FastSolverCache&&) noexcept = default;
@@ -279,8 +280,9 @@ StepStats stepFastMassSpring(const MassSpringSystem& system, State& state, doubl
   const SystemConfig& config = system.config;
 
   // Prefactor once per (system, h): the matrix does not depend on the state.
+  const std::uint64_t revision = ws.fast.systemRevision();
   const FastSolverCache::Impl::Key key{h, config.rayleighMass, config.rayleighStiffness,
-                                       systemFingerprint(system)};
+                                       revision != 0 ? revision : systemFingerprint(system), revision != 0};
   if (!c.key || *c.key != key) {
     Stopwatch clock;
     c.factored = factor(system, h, c);
@@ -303,10 +305,27 @@ StepStats stepFastMassSpring(const MassSpringSystem& system, State& state, doubl
   });
   constantRightHandSide(system, state, h, c);
 
+  // Fixed iterations, or fewer once converged: an iteration that moves no free vertex by more
+  // than localGlobalTolerance times the step's largest displacement is the last (at small h the
+  // inertial prediction is nearly the answer and one or two suffice).
+  const std::size_t rows0 = c.freeVertices.size();
+  const double tol2 = solver.localGlobalTolerance * solver.localGlobalTolerance;
   for (int it = 0; it < std::max(1, solver.localGlobalIterations); ++it) {
+    c.previous.resize(rows0);
+    for (std::size_t r = 0; r < rows0 && tol2 > 0.0; ++r)
+      c.previous[r] = state.x[c.freeVertices[r]];
     localStep(system, state.x, c);
     globalStep(system, h, c, state.x);
     stats.localGlobalIterations = it + 1;
+    if (tol2 == 0.0) continue;
+    double change = 0.0, scale = 0.0;
+    for (std::size_t r = 0; r < rows0; ++r) {
+      const std::uint32_t v = c.freeVertices[r];
+      const Vec3d moved = state.x[v] - c.previous[r], step = state.x[v] - c.x0[v];
+      change = std::max(change, dot(moved, moved));
+      scale = std::max(scale, dot(step, step));
+    }
+    if (change < tol2 * scale) break;
   }
 
   const auto rows = c.freeVertices.size();

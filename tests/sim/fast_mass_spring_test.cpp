@@ -10,6 +10,7 @@
 #include "test_systems.h"
 #include "tissue/sim/forces.h"
 #include "tissue/sim/integrators.h"
+#include "tissue/sim/simulator.h"
 #include "tissue/sim/units.h"
 
 namespace tissue::sim {
@@ -171,6 +172,50 @@ TEST(FastMassSpring, FactorIsCachedPerSystemAndStep) {
 TEST(FastMassSpring, NamedOnTheCommandLine) {
   EXPECT_EQ(integratorName(Integrator::FastMassSpring), "fast-mass-spring");
   EXPECT_EQ(parseIntegrator("fast-mass-spring"), Integrator::FastMassSpring);
+}
+
+TEST(FastMassSpring, SimulatorRefactorsOnlyWhenPinsOrGraspsChange) {
+  // The simulator keys the factor on its own revision (bumped by setKinematic), not on a
+  // fingerprint pass per step: frames refactor only after the kinematic set changed.
+  const test::Patch patch = test::gridPatch(6, 6, 2.0f);
+  auto system = test::patchSystem(patch, 0.1, 1e-5, 1.0, {0, 5}, {});
+  SimulatorConfig config{.integrator = Integrator::FastMassSpring, .frameTime = 1.0 / 60.0, .substeps = 4};
+  auto sim = Simulator::create(system, restState(patch.positions), config);
+  ASSERT_TRUE(sim.ok());
+  EXPECT_TRUE(sim->advanceFrame().refactored);
+  EXPECT_FALSE(sim->advanceFrame().refactored);
+  const std::uint32_t grasped[] = {14, 15};
+  ASSERT_TRUE(sim->setKinematic(grasped).ok());
+  const FrameReport graspFrame = sim->advanceFrame();
+  EXPECT_TRUE(graspFrame.refactored);
+  EXPECT_GT(graspFrame.factorMs, 0.0);
+  EXPECT_FALSE(sim->advanceFrame().refactored);
+  ASSERT_TRUE(sim->setKinematic({}).ok());
+  EXPECT_TRUE(sim->advanceFrame().refactored);
+  EXPECT_FALSE(sim->advanceFrame().refactored);
+}
+
+TEST(FastMassSpring, ToleranceEndsTheIterationsEarlyAtSmallSteps) {
+  // At h = 0.1 ms (h^2 k / m = 0.02) the inertial prediction is nearly the step: a tolerance of 1e-3 ends
+  // the iterations well before 50, and the result is within that tolerance of the full run.
+  const test::Patch patch = test::gridPatch(7, 6, 2.0f);
+  const auto system = test::patchSystem(patch, 0.05, 0.0, 1.0, {0, 6}, {});
+  State start = restState(patch.positions);
+  start.v = test::pseudoRandomVelocities(start.v.size(), 30.0);
+  start.v[0] = start.v[6] = {};
+  State early = start, full = start;
+  StepWorkspace ws1, ws2;
+  const StepStats stats = step(Integrator::FastMassSpring, system, early, 1e-4, ws1,
+                               {.localGlobalIterations = 50, .localGlobalTolerance = 1e-3});
+  step(Integrator::FastMassSpring, system, full, 1e-4, ws2, {.localGlobalIterations = 50});
+  EXPECT_LT(stats.localGlobalIterations, 50);
+  double largest = 0.0, error = 0.0;
+  for (std::size_t k = 0; k < full.x.size(); ++k) {
+    largest = std::max(largest, length(full.x[k] - start.x[k]));
+    error = std::max(error, length(early.x[k] - full.x[k]));
+  }
+  EXPECT_GT(largest, 0.0);
+  EXPECT_LT(error, 1e-2 * largest);
 }
 
 }  // namespace

@@ -4,10 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
+#include "closed_surfaces.h"
 #include "test_systems.h"
 #include "tissue/sim/forces.h"
+#include "tissue/sim/lattice.h"
 #include "tissue/sim/simulator.h"
 #include "tissue/sim/units.h"
 
@@ -197,6 +200,169 @@ TEST(Instrument, PathInterpolatesLinearly) {
   EXPECT_NEAR(poseOnPath(path, 2.0).position.y, 10.0, 1e-12);
   EXPECT_NEAR(poseOnPath(path, 9.0).position.y, 20.0, 1e-12);
   EXPECT_NEAR(poseOnPath(path, -1.0).position.x, 0.0, 1e-12);
+}
+
+/// An icosphere of radius 20 mm (642 surface vertices) carried by a 5 mm lattice (springs
+/// 0.002 N/mm, 1e-6 N*s/mm; 1e-3 g/mm^3: below symplectic Euler's limit at 1 ms even for the
+/// lightest corner node): the embedded organ of the lattice contact tests. Nodes
+/// below z = `pinBelow` (mm) are pinned (none by default).
+struct LatticeOrgan {
+  test::ClosedSurface surface = test::icosphere(20.0, {0.0f, 0.0f, 0.0f}, 3);
+  EmbeddedLattice lattice;
+  MassSpringSystem system;
+};
+
+LatticeOrgan latticeOrgan(const SystemConfig& config, double pinBelow = -1e9) {
+  LatticeOrgan o;
+  o.lattice =
+      buildEmbeddedLattice(
+          o.surface.positions, o.surface.triangles,
+          {.cellSize = 5.0, .springs = {.stiffness = 0.002, .damping = 1e-6}, .mass = {.density = 1e-3}})
+          .value();
+  std::vector<std::uint32_t> pinned;
+  for (std::uint32_t n = 0; n < o.lattice.nodeCount(); ++n)
+    if (o.lattice.nodePositions[n].z < pinBelow) pinned.push_back(n);
+  o.system = makeSystem(o.lattice.springs, o.lattice.masses, pinned, config).value();
+  return o;
+}
+
+/// Symplectic Euler at 17 substeps per 60 Hz frame (the default scenario's haptic rate).
+Simulator latticeSimulator(const LatticeOrgan& o) {
+  SimulatorConfig config{.integrator = Integrator::SymplecticEuler, .frameTime = 1.0 / 60.0, .substeps = 17};
+  return Simulator::create(o.system, {o.lattice.nodePositions, std::vector<Vec3d>(o.lattice.nodeCount())},
+                           config)
+      .value();
+}
+
+std::vector<Vec3d> surfaceOf(const LatticeOrgan& o, const State& state) {
+  std::vector<Vec3d> out(o.lattice.vertexNodes.size());
+  for (std::size_t s = 0; s < out.size(); ++s)
+    for (int c = 0; c < 8; ++c)
+      out[s] += o.lattice.vertexWeights[s][c] * state.x[o.lattice.vertexNodes[s][c]];
+  return out;
+}
+
+TEST(Instrument, LatticePokePushesTheEmbeddedSurfaceOutOfTheTool) {
+  // A sphere of radius 6 mm comes down onto the top (z = 20 mm) of the lattice ball, pinned
+  // below z = -12 mm, 8 mm deep over 0.5 s, and holds: every surface vertex (W x) stays out of
+  // the tool to within the contact tolerance, while the lattice nodes need not.
+  const LatticeOrgan o = latticeOrgan({.gravity = {}}, -12.0);
+  Simulator sim = latticeSimulator(o);
+  const double radius = 6.0;
+  std::vector<ToolKeyframe> path{
+      {0.0, {{0.0, 0.0, 27.0}}}, {0.1, {{0.0, 0.0, 27.0}}}, {0.6, {{0.0, 0.0, 18.0}}}};
+  auto tool = Instrument::create({.shape = {ToolShapeKind::Sphere, radius}}, path);
+  ASSERT_TRUE(tool.ok());
+  ASSERT_TRUE(
+      tool->setEmbedding({o.lattice.vertexNodes, o.lattice.vertexWeights}, o.lattice.nodeCount()).ok());
+  sim.setSubstepHook(&*tool);
+  const double tolerance = tool->config().contactToleranceFraction * radius;
+  for (int f = 0; f < 60; ++f) {
+    const FrameReport report = sim.advanceFrame();
+    ASSERT_TRUE(report.events.empty()) << "frame " << f;
+    const auto surface = surfaceOf(o, sim.state());
+    for (std::size_t s = 0; s < surface.size(); ++s) {
+      ASSERT_TRUE(isFinite(surface[s]));
+      ASSERT_GE(signedDistance(tool->config().shape, tool->pose(), surface[s]), -tolerance - 1e-9)
+          << "surface vertex " << s << " frame " << f;
+    }
+    const InstrumentFrameReport r = tool->lastFrame();
+    ASSERT_TRUE(isFinite(r.forceN));
+    EXPECT_LE(r.maxContactDepthMm, tolerance + 1e-12);
+    ASSERT_EQ(r.forceSamplesN.size(), 17u);
+  }
+  const InstrumentFrameReport r = tool->lastFrame();
+  EXPECT_GT(r.contacts, 3u);                           // surface vertices, not nodes
+  EXPECT_GT(r.forceN.z, 0.0);                          // the compressed ball pushes the tool up
+  EXPECT_LT(std::abs(r.forceN.x), 0.05 * r.forceN.z);  // the poke is symmetric
+  // The top of the ball is pressed down, the bottom held by the pins.
+  EXPECT_LT(surfaceOf(o, sim.state())[0].z, 20.5);
+}
+
+TEST(Instrument, LatticeContactForceIsTheReactionToTheNodesMomentum) {
+  // A free lattice ball (no pins, no Rayleigh damping: only gravity and the tool act on it)
+  // falls 1 mm onto a sphere of radius 60 mm: every frame the force on the tool is M g - dP/dt,
+  // the whole ball's momentum balance, computed without the contact code; the per-substep
+  // samples average to it.
+  SystemConfig config{.gravity = {0.0, 0.0, -kStandardGravity}};
+  const LatticeOrgan o = latticeOrgan(config);
+  Simulator sim = latticeSimulator(o);
+  double totalMass = 0.0;
+  for (double m : o.system.masses)
+    totalMass += m;
+  auto tool = Instrument::createLive({.shape = {ToolShapeKind::Sphere, 60.0}}, {{0.0, 0.0, -81.0}});
+  ASSERT_TRUE(tool.ok());
+  ASSERT_TRUE(
+      tool->setEmbedding({o.lattice.vertexNodes, o.lattice.vertexWeights}, o.lattice.nodeCount()).ok());
+  sim.setSubstepHook(&*tool);
+  const double T = 1.0 / 60.0;
+  const double weightN = totalMass * kStandardGravity / kForcePerNewton;
+  bool touched = false;
+  double hardest = 0.0;
+  for (int f = 0; f < 40; ++f) {
+    const Vec3d p0 = linearMomentum(sim.system(), sim.state().v);
+    ASSERT_TRUE(sim.advanceFrame().events.empty()) << "frame " << f;
+    const Vec3d p1 = linearMomentum(sim.system(), sim.state().v);
+    const Vec3d expected = (1.0 / kForcePerNewton) * (totalMass * config.gravity - (1.0 / T) * (p1 - p0));
+    const InstrumentFrameReport r = tool->lastFrame();
+    ASSERT_NEAR(r.forceN.x, expected.x, 1e-9 * weightN) << "frame " << f;
+    ASSERT_NEAR(r.forceN.y, expected.y, 1e-9 * weightN) << "frame " << f;
+    ASSERT_NEAR(r.forceN.z, expected.z, 1e-9 * weightN) << "frame " << f;
+    Vec3d mean{};
+    for (const Vec3d& sample : r.forceSamplesN)
+      mean += (1.0 / static_cast<double>(r.forceSamplesN.size())) * sample;
+    ASSERT_NEAR(mean.z, r.forceN.z, 1e-9 * weightN);
+    touched = touched || r.contacts > 0;
+    hardest = std::min(hardest, r.forceN.z);
+  }
+  EXPECT_TRUE(touched);
+  EXPECT_LT(hardest, -0.5 * weightN);  // the landing ball pushes the tool down (it bounces off)
+  for (const Vec3d& x : sim.state().x)
+    ASSERT_TRUE(isFinite(x));
+}
+
+TEST(Instrument, LatticeGraspTakesTheCarryingNodesAndTheSurfaceFollowsRigidly) {
+  const LatticeOrgan o = latticeOrgan({.gravity = {}}, -12.0);
+  Simulator sim = latticeSimulator(o);
+  const ToolPose start{{0.0, 0.0, 24.0}};
+  auto tool = Instrument::createLive({.shape = {ToolShapeKind::Sphere, 3.0}, .graspMarginMm = 1.5}, start);
+  ASSERT_TRUE(tool.ok());
+  ASSERT_TRUE(
+      tool->setEmbedding({o.lattice.vertexNodes, o.lattice.vertexWeights}, o.lattice.nodeCount()).ok());
+  sim.setSubstepHook(&*tool);
+  // The surface vertices within 4.5 mm of the tool centre: the top cap of the ball.
+  std::vector<std::uint32_t> near;
+  const auto rest = surfaceOf(o, sim.state());
+  for (std::uint32_t s = 0; s < rest.size(); ++s)
+    if (length(rest[s] - start.position) <= 4.5) near.push_back(s);
+  ASSERT_FALSE(near.empty());
+  auto taken = tool->grasp(sim);
+  ASSERT_TRUE(taken.ok()) << taken.error().message;
+  const std::vector<std::uint32_t> expected = cellNodes(o.lattice, near);
+  ASSERT_EQ(std::vector<std::uint32_t>(tool->graspedVertices().begin(), tool->graspedVertices().end()),
+            expected);
+  for (int f = 1; f <= 20; ++f) {
+    tool->setTarget({start.position + Vec3d{0.0, 0.0, 4.0 * f / 20.0}});
+    ASSERT_TRUE(sim.advanceFrame().events.empty());
+  }
+  const auto lifted = surfaceOf(o, sim.state());
+  for (std::uint32_t s : near) {
+    EXPECT_NEAR(lifted[s].z - rest[s].z, 4.0, 1e-9) << "surface vertex " << s;
+    EXPECT_NEAR(lifted[s].x, rest[s].x, 1e-9);
+  }
+  EXPECT_LT(tool->lastFrame().forceN.z, 0.0);  // the stretched ball pulls the tool down
+  ASSERT_TRUE(tool->release(sim).ok());
+  EXPECT_FALSE(tool->grasping());
+}
+
+TEST(Instrument, BadEmbeddingIsRejected) {
+  const LatticeOrgan o = latticeOrgan({.gravity = {}});
+  auto tool = Instrument::createLive({}, {});
+  ASSERT_TRUE(tool.ok());
+  EXPECT_FALSE(tool->setEmbedding({o.lattice.vertexNodes, o.lattice.vertexWeights}, 3).ok());
+  EXPECT_FALSE(tool->setEmbedding({o.lattice.vertexNodes, std::span(o.lattice.vertexWeights).first(2)},
+                                  o.lattice.nodeCount())
+                   .ok());
 }
 
 }  // namespace

@@ -1,10 +1,12 @@
 // tissue-sim sim-bench: the cost of one step of every integrator on generated patches of about
-// 10^3 to 10^6 springs, the force pass alone at 1 and T threads, and the per-frame path on the
-// data organ (commands/sim_bench_frame_path.cpp).
+// 10^3 to 10^6 springs, the force pass alone at 1 and T threads, the per-frame path on the
+// data organ (commands/sim_bench_frame_path.cpp) and the default scenario in real time
+// (commands/sim_bench_scenario.cpp: ms per frame median/p99/max, force-update rate).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -167,6 +169,22 @@ void printText(const nlohmann::json& out) {
                 r["ms"].get<double>(), r["springs_per_second"].get<double>() * 1e-6,
                 r["springs_per_second_best"].get<double>() * 1e-6);
   if (out.contains("frame_path")) std::cout << "\nframe path:\n" << out["frame_path"].dump(2) << "\n";
+  if (out.contains("scenario")) {
+    const auto& s = out["scenario"];
+    std::printf(
+        "\nscenario %s (%s, %d substeps, %zu nodes, %zu springs, %d frames):\n"
+        "  ms per frame  median %.3f  p99 %.3f  max %.3f\n"
+        "  ms per substep median %.4f  p99 %.4f  max %.4f\n"
+        "  force updates %.0f Hz   divergence events %ld   degraded frames %ld   max force %.3f N   "
+        "max refactor %.3f ms\n",
+        s["scenario"].get<std::string>().c_str(), s["integrator"].get<std::string>().c_str(),
+        s["substeps"].get<int>(), s["simulated_vertices"].get<std::size_t>(), s["springs"].get<std::size_t>(),
+        s["frames"].get<int>(), s["frame_ms"]["median"].get<double>(), s["frame_ms"]["p99"].get<double>(),
+        s["frame_ms"]["max"].get<double>(), s["substep_ms"]["median"].get<double>(),
+        s["substep_ms"]["p99"].get<double>(), s["substep_ms"]["max"].get<double>(),
+        s["force_update_hz"].get<double>(), s["divergence_events"].get<long>(),
+        s["degraded_frames"].get<long>(), s["max_force_N"].get<double>(), s["max_factor_ms"].get<double>());
+  }
 }
 
 }  // namespace
@@ -178,6 +196,10 @@ void registerSimBenchCommand(CLI::App& app, const GlobalOptions& global, int& ex
     int frames = 30;
     std::string mesh;
     bool skipFramePath = false;
+    std::string scenario;
+    int scenarioFrames = 0;
+    std::string scenarioIntegrator;
+    bool skipScenario = false;
   };
   auto o = std::make_shared<Options>();
   auto* cmd =
@@ -188,6 +210,11 @@ void registerSimBenchCommand(CLI::App& app, const GlobalOptions& global, int& ex
   cmd->add_option("--frames", o->frames, "frames of the frame-path measurement (default 30)");
   cmd->add_option("--mesh", o->mesh, "organ of the frame path (default data/meshes/liver.obj)");
   cmd->add_flag("--skip-frame-path", o->skipFramePath, "only the generated patches");
+  cmd->add_option("--scenario", o->scenario,
+                  "scenario of the real-time measurement (default data/scenarios/liver_poke_grasp.json)");
+  cmd->add_option("--scenario-frames", o->scenarioFrames, "its frames (default: the scenario's)");
+  cmd->add_option("--scenario-integrator", o->scenarioIntegrator, "its integrator instead of the scenario's");
+  cmd->add_flag("--skip-scenario", o->skipScenario, "no scenario measurement");
   cmd->callback([o, &global, &exitCode] {
     if (o->threads < 1 || o->threads > 64) {
       exitCode = fail("sim-bench", "--threads must be between 1 and 64");
@@ -195,6 +222,21 @@ void registerSimBenchCommand(CLI::App& app, const GlobalOptions& global, int& ex
     }
     if (o->maxSprings < 1000 || o->frames < 2) {
       exitCode = fail("sim-bench", "--max-springs must be at least 1000 and --frames at least 2");
+      return;
+    }
+    std::optional<sim::Integrator> scenarioIntegrator;
+    if (!o->scenarioIntegrator.empty()) {
+      scenarioIntegrator = sim::parseIntegrator(o->scenarioIntegrator);
+      if (!scenarioIntegrator) {
+        exitCode =
+            fail("sim-bench", "--scenario-integrator: unknown integrator \"" + o->scenarioIntegrator +
+                                  "\"; give explicit-euler, symplectic-euler, verlet, implicit-euler or "
+                                  "fast-mass-spring");
+        return;
+      }
+    }
+    if (o->scenarioFrames < 0) {
+      exitCode = fail("sim-bench", "--scenario-frames must be >= 1 (0: the scenario's)");
       return;
     }
     nlohmann::json out;
@@ -244,6 +286,19 @@ void registerSimBenchCommand(CLI::App& app, const GlobalOptions& global, int& ex
         return;
       }
       out["frame_path"] = *framePath;
+    }
+    if (!o->skipScenario) {
+      const auto file = o->scenario.empty() ? dataDir() / "scenarios" / "liver_poke_grasp.json"
+                                            : std::filesystem::path(o->scenario);
+      auto measured = measureScenario({.scenario = file,
+                                       .sharedMeshesDir = sharedDir() / "meshes",
+                                       .frames = o->scenarioFrames,
+                                       .integrator = scenarioIntegrator});
+      if (!measured) {
+        exitCode = fail("sim-bench", measured.error().message);
+        return;
+      }
+      out["scenario"] = *measured;
     }
     out["bench_s"] = total.elapsedMs() * 1e-3;
     if (global.json)

@@ -1,6 +1,7 @@
 // tissue-sim simulate SCENARIO.json: runs a scenario file (docs/SCENARIOS.md) and writes the
 // per-frame metrics (frames.csv), a summary (summary.json), and with --images a render of the
 // last frame.
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -20,7 +21,8 @@ namespace {
 struct SimulateOptions {
   std::string scenario;
   std::string outDir;
-  int frames = 0;  ///< 0: the scenario's
+  int frames = 0;          ///< 0: the scenario's
+  std::string integrator;  ///< empty: the scenario's
   bool images = false;
 };
 
@@ -42,15 +44,39 @@ Result<std::string> renderLastFrame(const scenario::ScenarioRun& run, const std:
   return png.filename().string();
 }
 
-nlohmann::json summaryJson(const scenario::ScenarioRun& run, const scenario::RunSummary& s, double wallMs) {
+/// The q-quantile (0..1) of `values` (nearest rank); 0 when empty.
+double quantile(std::vector<double> values, double q) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(values.size())));
+  return values[std::clamp<std::size_t>(rank, 1, values.size()) - 1];
+}
+
+nlohmann::json summaryJson(const scenario::ScenarioRun& run, const scenario::RunSummary& s,
+                           const std::vector<scenario::FrameMetrics>& frames, double wallMs) {
+  std::vector<double> total;
+  std::size_t samples = 0;
+  for (const auto& f : frames) {
+    total.push_back(f.totalMs);
+    samples += f.forceSamplesN.size();
+  }
+  const double simulatedS =
+      frames.empty() ? 0.0 : frames.back().timeS - frames.front().timeS + run.scenario().frameTime;
   return {{"scenario", run.scenario().file.string()},
           {"mesh", run.scenario().mesh.string()},
           {"vertices", run.mesh().positions.size()},
+          {"simulated_vertices", run.simulator().system().vertexCount()},
           {"springs", run.simulator().system().springs.size()},
+          {"substeps", run.simulator().substeps()},
           {"integrator", sim::integratorName(run.simulator().integrator())},
           {"frames", s.frames},
           {"nan_frames", s.nanFrames},
           {"divergence_events", s.divergenceEvents},
+          {"degraded_frames", s.degradedFrames},
+          {"frame_ms",
+           {{"median", quantile(total, 0.5)}, {"p99", quantile(total, 0.99)}, {"max", quantile(total, 1.0)}}},
+          {"max_factor_ms", s.maxFactorMs},
+          {"force_update_hz", simulatedS > 0.0 ? double(samples) / simulatedS : 0.0},
           {"max_contact_force_N", s.maxForceN},
           {"mean_contact_force_N", s.meanForceN},
           {"ms_per_frame",
@@ -69,6 +95,14 @@ int runSimulate(const SimulateOptions& o, const GlobalOptions& global) {
   for (const std::string& warning : parsed->warnings)  // e.g. a Poisson ratio springs cannot realise
     std::cerr << "tissue-sim simulate: warning: " << warning << "\n";
   if (o.frames > 0) parsed->frames = o.frames;
+  if (!o.integrator.empty()) {
+    const auto integrator = sim::parseIntegrator(o.integrator);
+    if (!integrator)
+      return fail("simulate", "--integrator: unknown integrator \"" + o.integrator +
+                                  "\"; give explicit-euler, symplectic-euler, verlet, implicit-euler or "
+                                  "fast-mass-spring");
+    parsed->integrator = *integrator;
+  }
   auto run = scenario::ScenarioRun::create(*parsed);
   if (!run) return fail("simulate", run.error().message);
   const std::filesystem::path out =
@@ -83,7 +117,7 @@ int runSimulate(const SimulateOptions& o, const GlobalOptions& global) {
     if (!m) return fail("simulate", m.error().message);
     frames.push_back(*m);
   }
-  nlohmann::json summary = summaryJson(**run, scenario::summarize(frames), wall.elapsedMs());
+  nlohmann::json summary = summaryJson(**run, scenario::summarize(frames), frames, wall.elapsedMs());
   if (auto ok = writeTextFileAtomic(out / "frames.csv", scenario::framesCsv(frames)); !ok)
     return fail("simulate", ok.error().message);
   summary["frames_csv"] = (out / "frames.csv").string();
@@ -110,6 +144,7 @@ void registerSimulateCommand(CLI::App& app, const GlobalOptions& global, int& ex
   cmd->add_option("scenario", o->scenario, "scenario file (JSON, docs/SCENARIOS.md)")->required();
   cmd->add_option("--out", o->outDir, "output folder (default out/<scenario name>)");
   cmd->add_option("--frames", o->frames, "frames to run instead of the scenario's");
+  cmd->add_option("--integrator", o->integrator, "integrator instead of the scenario's (to compare them)");
   cmd->add_flag("--images", o->images, "also render the last frame (needs UVs and a material file)");
   cmd->callback([o, &global, &exitCode] { exitCode = runSimulate(*o, global); });
 }

@@ -342,8 +342,9 @@ void parseTopLevel(const json& j, const std::filesystem::path& file, const Scena
   if (j.contains("gravity")) out.system.gravity = vec3(j["gravity"], "gravity", "mm/s^2");
   if (j.contains("pinned")) parsePinned(j["pinned"], out);
   if (j.contains("integrator")) {
-    const std::string name = text(j["integrator"], "integrator",
-                                  {"explicit-euler", "symplectic-euler", "verlet", "implicit-euler"});
+    const std::string name =
+        text(j["integrator"], "integrator",
+             {"explicit-euler", "symplectic-euler", "verlet", "implicit-euler", "fast-mass-spring"});
     out.integrator = *sim::parseIntegrator(name);
   }
   if (j.contains("dt")) out.frameTime = positive(j["dt"], "dt", "s per frame");

@@ -22,6 +22,13 @@ bool stateFinite(const sim::State& s) {
 
 }  // namespace
 
+double maxSampleN(const FrameMetrics& f) {
+  double m = 0.0;
+  for (const sim::Vec3d& s : f.forceSamplesN)
+    m = std::max(m, sim::length(s));
+  return m;
+}
+
 ScenarioRun::ScenarioRun(Scenario scenario, ScenarioMesh mesh, sim::Simulator simulator)
     : m_scenario(std::move(scenario)), m_mesh(std::move(mesh)), m_simulator(std::move(simulator)) {}
 
@@ -34,6 +41,8 @@ Result<std::unique_ptr<ScenarioRun>> ScenarioRun::create(const Scenario& scenari
                               .frameTime = scenario.frameTime,
                               .substeps = scenario.substeps,
                               .solver = scenario.solver};
+  // solver.tolerance also ends the fast solver's local/global iterations early (docs/SCENARIOS.md).
+  config.solver.localGlobalTolerance = scenario.solver.relativeTolerance;
   auto simulator =
       sim::Simulator::create(std::move(*system), sim::restState(mesh->simulatedRestPositions()), config);
   if (!simulator) return Error{scenario.file.string() + ": " + simulator.error().message};
@@ -42,6 +51,12 @@ Result<std::unique_ptr<ScenarioRun>> ScenarioRun::create(const Scenario& scenari
     auto tool = sim::Instrument::create(scenario.instrument->config, scenario.instrument->path);
     if (!tool) return Error{scenario.file.string() + ": instrument: " + tool.error().message};
     run->m_instrument.emplace(std::move(*tool));
+    // On a lattice the tool touches the render surface; its corrections go to the nodes.
+    if (const auto& lattice = run->m_mesh.lattice)
+      if (auto ok = run->m_instrument->setEmbedding({lattice->vertexNodes, lattice->vertexWeights},
+                                                    lattice->nodeCount());
+          !ok)
+        return Error{scenario.file.string() + ": instrument: " + ok.error().message};
     run->m_simulator.setSubstepHook(&*run->m_instrument);
   }
   return run;
@@ -85,11 +100,17 @@ Result<FrameMetrics> ScenarioRun::advance() {
   m.contactMs = report.hookMs;
   m.checkMs = report.checkMs;
   m.rollbackMs = report.rollbackMs;
+  m.factorMs = report.factorMs;
+  m.degrade = report.degrade;
+  m.recoveryMs = report.recoveryMs;
   if (m_instrument) {
-    const auto tool = m_instrument->lastFrame();
+    auto tool = m_instrument->lastFrame();
     m.forceN = tool.forceN;
     m.contacts = tool.contacts;
     m.grasped = tool.grasped;
+    m.contactDepthMm = tool.maxContactDepthMm;
+    m.forceSamplesN = std::move(tool.forceSamplesN);
+    m.sampleIntervalS = tool.sampleIntervalS;
   }
   m.forceMagnitudeN = sim::length(m.forceN);
   m.maxStretch = sim::maxStretch(system, state.x);
@@ -106,6 +127,8 @@ RunSummary summarize(const std::vector<FrameMetrics>& frames) {
   for (const FrameMetrics& f : frames) {
     if (!f.finite) ++s.nanFrames;
     if (std::isfinite(f.forceMagnitudeN)) s.maxForceN = std::max(s.maxForceN, f.forceMagnitudeN);
+    if (!f.degrade.empty()) ++s.degradedFrames;
+    s.maxFactorMs = std::max(s.maxFactorMs, f.factorMs);
     s.meanForceN += f.forceMagnitudeN;
     s.divergenceEvents += f.divergenceEvents;
     s.meanIntegrateMs += f.integrateMs;
@@ -130,13 +153,16 @@ std::string framesCsv(const std::vector<FrameMetrics>& frames) {
   out << "frame,time_s,integrator,substeps,force_x_N,force_y_N,force_z_N,force_N,contacts,grasped,max_"
          "stretch,"
          "kinetic_J,elastic_J,divergence_events,integrate_ms,contact_ms,check_ms,rollback_ms,action_ms,total_"
-         "ms,divergence_reason\n";
+         "ms,divergence_reason,degrade,recovery_ms,factor_ms,force_samples,max_sample_force_N,contact_depth_"
+         "mm\n";
   for (const FrameMetrics& f : frames)
     out << f.frame << ',' << f.timeS << ',' << sim::integratorName(f.integrator) << ',' << f.substeps << ','
         << f.forceN.x << ',' << f.forceN.y << ',' << f.forceN.z << ',' << f.forceMagnitudeN << ','
         << f.contacts << ',' << f.grasped << ',' << f.maxStretch << ',' << f.kineticJ << ',' << f.elasticJ
         << ',' << f.divergenceEvents << ',' << f.integrateMs << ',' << f.contactMs << ',' << f.checkMs << ','
-        << f.rollbackMs << ',' << f.actionMs << ',' << f.totalMs << ',' << f.divergenceReason << '\n';
+        << f.rollbackMs << ',' << f.actionMs << ',' << f.totalMs << ',' << f.divergenceReason << ','
+        << f.degrade << ',' << f.recoveryMs << ',' << f.factorMs << ',' << f.forceSamplesN.size() << ','
+        << maxSampleN(f) << ',' << f.contactDepthMm << '\n';
   return out.str();
 }
 

@@ -53,6 +53,15 @@ double signedDistance(const ToolShape& shape, const ToolPose& pose, const Vec3d&
 /// of the axis); zero when dt <= 0.
 Vec3d toolPointVelocity(const ToolPose& previous, const ToolPose& current, double dt, const Vec3d& x);
 
+/// Where projectOutOfTool puts a point `point` (mm) that lies inside the tool at `pose`, the
+/// tool having moved by `motion` (mm) since its previous pose: a point the motion swept (one
+/// that was outside before: d.u > -|motion|/2 for a sphere, d from the core, u the motion's
+/// direction) goes along the motion onto the leading surface; then every point goes radially
+/// from the core onto the surface. `normal` receives the outward unit normal there. A point
+/// outside is returned unchanged (with its normal).
+Vec3d pushOutOfTool(const ToolShape& shape, const ToolPose& pose, const Vec3d& motion, const Vec3d& point,
+                    Vec3d& normal);
+
 /// The points one projection touched, and the momentum it gave them.
 struct ProjectionResult {
   std::uint32_t projected = 0;  ///< points moved onto the surface
@@ -60,12 +69,12 @@ struct ProjectionResult {
 };
 
 /// Projects every point of `x` with `invMass[k] > 0` that lies inside the tool (at `pose`) onto
-/// its surface - along the tool's motion since `previous` when it moved (onto its leading side),
-/// else along the core-to-point direction - and removes the inward part of its normal
-/// velocity relative to the tool's point velocity (the tool moved from `previous` in `dt` s).
-/// Points with invMass 0 (pinned, grasped) are left alone. `mass` in g, positions mm,
-/// velocities mm/s. Works on any point set: the simulated vertices, or an embedded surface whose
-/// corrections are then scattered to lattice nodes.
+/// its surface - a point the tool's motion since `previous` swept along that motion (onto its
+/// leading side), then along the core-to-point direction (pushOutOfTool) - and removes the inward part of its
+/// normal velocity relative to the tool's point velocity (the tool moved from `previous` in `dt` s). Points
+/// with invMass 0 (pinned, grasped) are left alone. `mass` in g, positions mm, velocities mm/s. Works on any
+/// point set: the simulated vertices, or an embedded surface whose corrections are then scattered to lattice
+/// nodes.
 ProjectionResult projectOutOfTool(const ToolShape& shape, const ToolPose& pose, const ToolPose& previous,
                                   double dt, std::span<const double> mass, std::span<const double> invMass,
                                   std::span<Vec3d> x, std::span<Vec3d> v);

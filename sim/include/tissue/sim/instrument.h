@@ -14,7 +14,21 @@
 /// sphere), i.e. one extra pass over the vertices per sub-move; a fast tool costs more sub-moves.
 /// Tissue moving into a resting tool is caught at the substep rate (springs cannot carry a vertex
 /// through the tool within one substep unless it moves more than a radius per substep).
+///
+/// With a SurfaceEmbedding (an embedded lattice, lattice.h) the tool touches the render surface,
+/// not the simulated nodes: after each sub-move the surface vertices inside the tool (positions
+/// W x, the trilinear weights W) are the contacts; each one's correction (onto the tool's
+/// surface, then the removal of its inward normal velocity) is scattered to the 8 nodes that
+/// carry it by the transpose of its weights, as the least-norm node correction w_c d / sum w^2,
+/// and a node shared by several contacts takes their weight-averaged correction. A few Jacobi
+/// passes (InstrumentConfig::contactIterations) bring every contact onto the surface to within
+/// contactToleranceFraction of the radius; the reaction, minus the momentum the nodes gained,
+/// is the tool force. The no-tunnelling argument is the sub-move one, for the surface vertices;
+/// the swept test of the tissue's own motion (stopSweptPoints) is replaced by the substep rate:
+/// at the ~1 kHz haptic substeps a surface vertex would have to move faster than radius / h
+/// (8 m/s for an 8 mm tool) to cross the tool within one substep.
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -42,6 +56,20 @@ struct InstrumentConfig {
   ToolShape shape{};
   double maxSubMoveFraction = 0.25;  ///< longest sub-move, as a fraction of the radius (0, 1]
   double graspMarginMm = 0.5;        ///< grasp takes the vertices within radius + this (mm)
+  /// Embedded surface only: Jacobi passes of the scattered projection per sub-move (>= 1).
+  int contactIterations = 8;
+  /// Embedded surface only: the passes stop once no contact is deeper than this fraction of
+  /// the radius inside the tool (unitless, > 0).
+  double contactToleranceFraction = 1e-3;
+};
+
+/// The render surface an instrument touches when the simulated vertices are the nodes of an
+/// embedded lattice: per surface vertex the 8 nodes that carry it and their weights (sum 1,
+/// EmbeddedLattice::vertexNodes and vertexWeights). Plain views: the arrays are not copied and
+/// must outlive the instrument's use.
+struct SurfaceEmbedding {
+  std::span<const std::array<std::uint32_t, 8>> nodes;
+  std::span<const std::array<double, 8>> weights;
 };
 
 /// What the instrument did during one frame.
@@ -54,16 +82,23 @@ struct InstrumentFrameReport {
   /// springs and gravity added during the substep, so the first term already is the force that
   /// resting vertices transmit (adding it again would count it twice). T = frame time (s).
   Vec3d forceN{};
-  std::uint32_t contacts = 0;  ///< vertices projected by the frame's last sub-move
-  std::uint32_t grasped = 0;   ///< vertices held
-  int subMoves = 0;            ///< sub-moves over the frame's substeps (last try of the frame)
-  ToolPose pose{};             ///< the tool at the end of the frame
+  /// The same force per substep (N): sample k is the reaction to substep k's projections plus
+  /// the pull on the grasped vertices during it (h_k-weighted, they average to forceN). With
+  /// 17 substeps per 1/60 s frame the force updates at 1020 Hz (a haptic device's rate).
+  std::vector<Vec3d> forceSamplesN;
+  double sampleIntervalS = 0.0;    ///< s between samples (the substep length)
+  std::uint32_t contacts = 0;      ///< vertices projected by the frame's last sub-move (surface
+                                   ///< vertices with an embedding)
+  double maxContactDepthMm = 0.0;  ///< embedding only: deepest contact left inside after the
+                                   ///< last pass of the frame's sub-moves (mm, >= 0)
+  std::uint32_t grasped = 0;       ///< vertices held
+  int subMoves = 0;                ///< sub-moves over the frame's substeps (last try of the frame)
+  ToolPose pose{};                 ///< the tool at the end of the frame
 };
 
 /// A tool tip driven by a path or by live input; plug it into a Simulator with
-/// setSubstepHook(&instrument). It acts on the simulated vertices (for an embedded lattice the
-/// projection runs on the embedded surface and its corrections are scattered to the nodes; see
-/// projectOutOfTool).
+/// setSubstepHook(&instrument). It acts on the simulated vertices, or, after setEmbedding, on
+/// the embedded surface whose corrections are scattered to the nodes (see the file comment).
 class Instrument final : public SubstepHook {
  public:
   /// A tool following `path` (at least one keyframe; times strictly increasing, s). Fails on a
@@ -76,9 +111,17 @@ class Instrument final : public SubstepHook {
   /// Switches a path-driven tool to live input.
   void setTarget(const ToolPose& pose);
 
+  /// Makes the tool touch the surface carried by the simulated vertices (`nodeCount` of them):
+  /// contact and grasp then work on the surface vertices of `embedding` (see SurfaceEmbedding
+  /// for its lifetime). Fails on arrays of different sizes or a node index out of range.
+  Result<void> setEmbedding(const SurfaceEmbedding& embedding, std::size_t nodeCount);
+  bool embedded() const { return !m_embedding.nodes.empty(); }
+
   /// Attaches the free vertices within radius + graspMarginMm of the tool: from now on they
   /// follow it rigidly (kinematic: inverse mass 0 in `simulator`), keeping their offsets, turned
-  /// with a capsule's axis. Replaces a previous grasp. Returns how many were taken.
+  /// with a capsule's axis. With an embedding: the nodes that carry the surface vertices within
+  /// radius + graspMarginMm (all 8 of each one's cell, so those vertices follow rigidly).
+  /// Replaces a previous grasp. Returns how many simulated vertices (nodes) were taken.
   Result<std::uint32_t> grasp(Simulator& simulator);
   /// Lets the grasped vertices go with their current velocity (the tool's).
   Result<void> release(Simulator& simulator);
@@ -99,6 +142,12 @@ class Instrument final : public SubstepHook {
   ToolPose poseAt(double t, const SubstepInfo& info) const;
   void moveGrasped(const MassSpringSystem& system, State& state, const ToolPose& from, const ToolPose& to,
                    double h);
+  /// One sub-move's contact on the embedded surface; returns the impulse given to the nodes
+  /// (g*mm/s) and sets m_lastContacts, m_maxDepth.
+  Vec3d projectEmbedded(const MassSpringSystem& system, State& state, const ToolPose& pose,
+                        const ToolPose& previous, double dt);
+  /// Surface position of vertex s (mm) from node positions.
+  Vec3d surfacePoint(std::span<const Vec3d> x, std::uint32_t s) const;
 
   InstrumentConfig m_config;
   std::vector<ToolKeyframe> m_path;  ///< empty under live input
@@ -113,6 +162,21 @@ class Instrument final : public SubstepHook {
   double m_time = 0.0;     ///< s covered by the frame's substeps so far
   std::uint32_t m_lastContacts = 0;
   int m_subMoves = 0;
+  double m_maxDepth = 0.0;        ///< mm, embedding only
+  std::vector<Vec3d> m_samples;   ///< N per substep of the current try
+  double m_sampleInterval = 0.0;  ///< s
+  // The embedding and its cells: the surface vertices grouped by their 8 nodes (CSR), so that
+  // a cell whose nodes' bounding sphere misses the tool is skipped whole (a trilinear point
+  // lies in the convex hull of its 8 nodes, hence in their bounding sphere).
+  SurfaceEmbedding m_embedding;
+  std::vector<std::uint32_t> m_cellOfGroup;    ///< group -> a representative surface vertex
+  std::vector<std::uint32_t> m_groupOffsets;   ///< group -> first entry in m_groupVertices
+  std::vector<std::uint32_t> m_groupVertices;  ///< surface vertices, grouped
+  // Scratch of the scattered projection (per node / per contact).
+  std::vector<Vec3d> m_nodeSum;
+  std::vector<double> m_nodeWeight;
+  std::vector<std::uint32_t> m_touched, m_candidates, m_contacts;
+  std::vector<Vec3d> m_contactNormals;
 };
 
 }  // namespace tissue::sim

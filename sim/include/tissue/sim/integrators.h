@@ -3,6 +3,7 @@
 /// Time integrators: one step of size h (s) advances a State of a MassSpringSystem in place.
 /// Steps never fail by themselves; the Simulator checks the result for divergence.
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string_view>
@@ -33,7 +34,10 @@ std::optional<Integrator> parseIntegrator(std::string_view name);
 struct ImplicitSolverConfig {
   int maxIterations = 200;           ///< conjugate-gradient iterations per step (implicit Euler)
   double relativeTolerance = 1e-10;  ///< stop when |residual| <= tolerance * |right-hand side|
-  int localGlobalIterations = 10;    ///< fast-mass-spring: local/global iterations per step (fixed)
+  int localGlobalIterations = 10;    ///< fast-mass-spring: local/global iterations per step (at most)
+  /// fast-mass-spring: stop the iterations early once one moves no vertex by more than this
+  /// times the step's largest displacement (unitless); 0 runs all localGlobalIterations.
+  double localGlobalTolerance = 0.0;
 };
 
 /// What one step did.
@@ -62,9 +66,16 @@ class FastSolverCache {
   Impl& impl();
   /// Drops the factor; the next fast step refactors.
   void clear();
+  /// A caller that owns the system and numbers its changes (the Simulator: every setKinematic
+  /// is a new revision) may key the factor on `revision` instead of a fingerprint of the
+  /// springs, masses and pins, which costs a pass over the arrays every step. 0 (the default,
+  /// and after a copy) fingerprints.
+  void setSystemRevision(std::uint64_t revision) { m_revision = revision; }
+  std::uint64_t systemRevision() const { return m_revision; }
 
  private:
   std::unique_ptr<Impl> m_impl;
+  std::uint64_t m_revision = 0;
 };
 
 /// Scratch reused between steps; `previousDeltaV` warm-starts the conjugate gradients and

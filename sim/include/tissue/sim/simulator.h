@@ -2,13 +2,17 @@
 /// \file
 /// The Simulator advances a system by frames: substeps of one integrator, each checked for
 /// divergence (non-finite values, energy blow-up, over-stretched springs). A diverged frame is
-/// rolled back to its start and retried with more substeps, then with a more stable integrator;
-/// every such event is reported, and the state handed out never holds NaN or Inf.
+/// rolled back to its start and retried once with a more stable integrator at the same substeps,
+/// if the frame's time budget allows; otherwise (or when the retry diverges too) it is relaxed:
+/// the frame-start positions are kept at rest. A frame thus never costs more than about one
+/// budget, whatever happens. Every such event is reported, and the state handed out never
+/// holds NaN or Inf.
 
 #include <string>
 #include <vector>
 
 #include "tissue/core/result.h"
+#include "tissue/core/stopwatch.h"
 #include "tissue/sim/integrators.h"
 #include "tissue/sim/substep_hook.h"
 #include "tissue/sim/system.h"
@@ -22,18 +26,24 @@ struct DivergenceLimits {
                                ///< (g*mm^2/s^2), floored as below so that a system at rest may start
   double floorStrain = 0.1;    ///< floor: every spring strained this much (unitless) plus every mass
                                ///< dropped by the mean rest length under gravity
+  /// The stretch and energy tests (a pass over the springs) run at this many evenly spread
+  /// substeps of a frame, and at its last; non-finite values are tested every substep. 0: every
+  /// substep. A divergence caught late is rolled back to the frame start all the same.
+  int checksPerFrame = 4;
 };
 
-/// How a diverged frame is recovered.
+/// How a diverged frame is recovered: a bounded degrade (at most one retry, never more substeps).
 struct RecoveryConfig {
-  int maxSubsteps = 64;          ///< substeps are doubled up to this before switching integrator
-  bool switchIntegrator = true;  ///< then explicit -> symplectic -> implicit Euler, Verlet -> implicit;
-                                 ///< implicit Euler and fast-mass-spring (both unconditionally
-                                 ///< stable) end the chain
-  /// After this many frames without divergence, a recovered simulator steps back towards the
-  /// configured setting: substeps are halved (not below SimulatorConfig::substeps). A replaced
-  /// integrator stays replaced (it failed at maxSubsteps). A transient (a tool backing off compressed tissue)
-  /// then costs a few expensive frames instead of every later frame. 0 keeps the recovered setting for good.
+  /// Retry a diverged frame once with the next more stable integrator (explicit -> symplectic
+  /// -> implicit Euler, Verlet -> implicit Euler) at the same substeps; implicit Euler and
+  /// fast-mass-spring (both unconditionally stable) have none and go straight to relaxing.
+  bool switchIntegrator = true;
+  /// ms of wall time one frame may spend: the retry starts only while less than half of it is
+  /// spent, and is abandoned (the frame relaxed) once the frame has spent all of it. <= 0: no limit.
+  double frameBudgetMs = 16.0;
+  /// After this many frames without divergence a replaced integrator is replaced back by the
+  /// configured one (a transient, such as a tool backing off compressed tissue, then costs a few
+  /// frames instead of every later frame). 0 keeps the fallback for good.
   int relaxAfterFrames = 10;
 };
 
@@ -53,9 +63,10 @@ struct DivergenceEvent {
   std::string reason;           ///< "non-finite", "energy blow-up" or "over-stretched spring"
   Integrator integrator{};      ///< the one that diverged
   int substeps = 0;             ///< with this many substeps
-  Integrator nextIntegrator{};  ///< the retry's integrator
-  int nextSubsteps = 0;         ///< the retry's substeps
-  bool recovered = false;       ///< false: every retry diverged; the frame-start state was kept at rest
+  Integrator nextIntegrator{};  ///< the retry's integrator (the same one when the frame was relaxed)
+  int nextSubsteps = 0;         ///< the retry's substeps (always `substeps`: never raised)
+  bool recovered = false;       ///< false: the frame was relaxed: its start positions kept, at rest
+  std::string action;           ///< "retry with <integrator>" or "relaxed to rest"
 };
 
 /// What one frame did, phases timed in ms.
@@ -68,6 +79,12 @@ struct FrameReport {
   double checkMs = 0.0;      ///< divergence checks
   double rollbackMs = 0.0;   ///< saving and restoring state
   double hookMs = 0.0;       ///< the substep hook (contact, grasp), every try of the frame
+  double factorMs = 0.0;     ///< fast-mass-spring: (re)factoring the matrix, part of integrateMs
+  bool refactored = false;   ///< fast-mass-spring: the matrix was factored in this frame
+  /// "" (no divergence), "fallback <integrator>" (a retry completed the frame) or "relaxed"
+  /// (the frame-start positions were kept at rest).
+  std::string degrade;
+  double recoveryMs = 0.0;  ///< wall time of the tries that diverged (the degrade's cost)
 };
 
 /// A system, its state and the frame loop. After a recovery the more stable setting is kept
@@ -100,7 +117,8 @@ class Simulator {
   /// Counts quiet frames and, after RecoveryConfig::relaxAfterFrames of them, steps a recovered
   /// setting back towards the configured one.
   void relaxRecovery(bool quietFrame);
-  std::string tryFrame(Integrator integrator, int substeps, double energyCeiling, FrameReport& report);
+  std::string tryFrame(Integrator integrator, int substeps, double energyCeiling, FrameReport& report,
+                       double deadlineMs, const Stopwatch& frameClock);
 
   MassSpringSystem m_system;
   State m_state;
@@ -115,6 +133,13 @@ class Simulator {
   SubstepHook* m_hook = nullptr;
   std::vector<Vec3d> m_substepStartX;   ///< mm, positions before the current step (hook only)
   std::vector<double> m_baseInvMasses;  ///< inverse masses with the pins only (1/g)
+  /// Elastic energy change (g*mm^2/s^2) of the hook's moves: over the springs of the vertices
+  /// whose position differs from m_afterStepX.
+  double hookElasticChange();
+  std::vector<Vec3d> m_afterStepX;             ///< mm, positions after the step, before the hook
+  std::vector<std::uint8_t> m_springMarks;     ///< scratch of hookElasticChange
+  std::vector<std::uint32_t> m_markedSprings;  ///< scratch of hookElasticChange
+  std::uint64_t m_revision = 1;                ///< bumped on every change of the system (fast solver key)
 };
 
 }  // namespace tissue::sim

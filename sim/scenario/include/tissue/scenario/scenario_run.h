@@ -35,7 +35,17 @@ struct FrameMetrics {
   double rollbackMs = 0.0;       ///< saving and restoring state
   double actionMs = 0.0;         ///< scripted grasps and releases
   double totalMs = 0.0;          ///< the whole frame
+  double factorMs = 0.0;         ///< fast-mass-spring: (re)factoring in this frame (part of integrateMs)
+  std::string degrade;           ///< "" or the bounded degrade taken ("fallback <integrator>", "relaxed")
+  double recoveryMs = 0.0;       ///< wall time of the frame's diverged tries
+  /// The tool force per substep (N), sampleIntervalS apart: the haptic-rate samples.
+  std::vector<sim::Vec3d> forceSamplesN;
+  double sampleIntervalS = 0.0;  ///< s
+  double contactDepthMm = 0.0;   ///< lattice: deepest surface vertex left inside the tool (mm)
 };
+
+/// The largest |F| (N) among a frame's per-substep force samples.
+double maxSampleN(const FrameMetrics& frame);
 
 /// A scenario being run: owns the simulator and the instrument (whose address the simulator
 /// keeps, hence created behind a unique_ptr).
@@ -82,6 +92,8 @@ struct RunSummary {
   double maxForceN = 0.0;
   double meanForceN = 0.0;
   long divergenceEvents = 0;
+  long degradedFrames = 0;   ///< frames that took a fallback integrator or were relaxed
+  double maxFactorMs = 0.0;  ///< the longest fast-solver (re)factoring of a frame, ms
   double meanIntegrateMs = 0.0, meanContactMs = 0.0, meanCheckMs = 0.0, meanRollbackMs = 0.0,
          meanActionMs = 0.0, meanTotalMs = 0.0;
 };
