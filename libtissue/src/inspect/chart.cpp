@@ -2,6 +2,8 @@
 // build), so the render window gets a Display* from XDisplay: $DISPLAY or a private Xvfb.
 #include "tissue/inspect/chart.h"
 
+#include <algorithm>
+
 #include <vtkAxis.h>
 #include <vtkChartLegend.h>
 #include <vtkChartXY.h>
@@ -110,6 +112,18 @@ Result<void> writeLineChart(const std::filesystem::path& png, const ChartSetting
   chart->GetTitleProperties()->SetFontSize(18);
   chart->SetShowLegend(true);
   chart->GetLegend()->GetLabelProperties()->SetFontSize(13);
+  if (settings.legendOutside) {
+    // A right margin as wide as the legend (about 8 px per character at 13 pt, plus the swatch),
+    // and the legend placed in it, outside the plot area.
+    std::size_t longest = 0;
+    for (const auto& s : series) longest = std::max(longest, s.label.size());
+    const int margin = std::min(settings.widthPx / 2, 60 + 8 * static_cast<int>(longest));
+    chart->SetAutoSize(true);
+    chart->SetBorders(70, 60, margin, 50);
+    chart->GetLegend()->SetInline(false);
+    chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+    chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
+  }
   styleAxis(chart->GetAxis(vtkAxis::BOTTOM), settings.xLabel, settings.logX);
   styleAxis(chart->GetAxis(vtkAxis::LEFT), settings.yLabel, settings.logY);
 

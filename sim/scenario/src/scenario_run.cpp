@@ -40,7 +40,9 @@ Result<std::unique_ptr<ScenarioRun>> ScenarioRun::create(const Scenario& scenari
   sim::SimulatorConfig config{.integrator = scenario.integrator,
                               .frameTime = scenario.frameTime,
                               .substeps = scenario.substeps,
-                              .solver = scenario.solver};
+                              .solver = scenario.solver,
+                              .limits = {},
+                              .recovery = scenario.recovery};
   // solver.tolerance also ends the fast solver's local/global iterations early (docs/SCENARIOS.md).
   config.solver.localGlobalTolerance = scenario.solver.relativeTolerance;
   auto simulator =

@@ -31,6 +31,9 @@ struct ChartSettings {
   bool logY = false;   ///< logarithmic y axis (every y must be > 0)
   int widthPx = 900;   ///< image width, pixels
   int heightPx = 600;  ///< image height, pixels
+  /// Draw the legend in a margin right of the plot, so that it never covers the data (the
+  /// margin is sized from the longest label); false: inside the plot's top right corner.
+  bool legendOutside = true;
 };
 
 /// Draws `series` as an XY chart with a legend into `png`, written atomically. Fails (never

@@ -18,6 +18,7 @@
 #include "tissue/sim/instrument.h"
 #include "tissue/sim/integrators.h"
 #include "tissue/sim/lattice.h"
+#include "tissue/sim/simulator.h"
 #include "tissue/sim/mass.h"
 #include "tissue/sim/spring_network.h"
 #include "tissue/sim/system.h"
@@ -77,6 +78,9 @@ struct Scenario {
   int frames = 60;
   sim::ImplicitSolverConfig solver{};
   std::optional<InstrumentSpec> instrument;
+  /// How a diverged frame is handled (not a file key: studies switch the degrade off to see
+  /// where an integrator fails).
+  sim::RecoveryConfig recovery{};
   /// Set by the "tissue" block: springs from E (springs.stiffness is then not given).
   std::optional<TissueSpec> tissue;
   /// Lines to show the user (the commands print each on stderr), e.g. a Poisson's ratio that
