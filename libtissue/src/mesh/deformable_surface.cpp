@@ -1,6 +1,7 @@
 #include "tissue/mesh/deformable_surface.h"
 
 #include <algorithm>
+#include <type_traits>
 #include <unordered_map>
 
 #include "tissue/core/stopwatch.h"
@@ -130,7 +131,11 @@ SurfaceUpdateStats DeformableSurface::updateWith(std::span<const Float3> geometr
   stats.normalsMs = clock.elapsedMs();
   // Phase: local planes, re-fitted only where a neighbourhood moved enough to matter.
   clock.restart();
-  stats.refit = m_fitter.update(m_geoPositions, m_geoNormals, refit);
+  if constexpr (std::is_same_v<Refit, PlaneRefitSettings>) {
+    stats.refit = m_fitter.update(m_geoPositions, m_geoNormals, refit, m_pool.get());
+  } else {
+    stats.refit = m_fitter.update(m_geoPositions, m_geoNormals, refit);
+  }
   copyPlanes();
   stats.planesMs = clock.elapsedMs();
   // Phase: tangent frames, per render vertex from each chart's own UVs.

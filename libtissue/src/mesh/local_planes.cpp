@@ -3,9 +3,11 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "fixed_moments.h"
+#include "tissue/mesh/worker_pool.h"
 #include "vec3.h"
 
 namespace tissue::mesh {
@@ -131,6 +133,9 @@ namespace {
 /// leaves that room so the bound holds for the quantised moments, mm.
 constexpr double kQuantisationSlackMm = 1.7320508075688772 / detail::kQuantumPerMm;
 
+// Below this many planes a second thread costs more than it saves.
+constexpr std::size_t kMinPlanesPerThread = 2048;
+
 }  // namespace
 
 IncrementalPlaneFitter::IncrementalPlaneFitter(std::span<const Float3> restPositions,
@@ -170,24 +175,31 @@ void IncrementalPlaneFitter::solvePlane(std::uint32_t v) {
 
 void IncrementalPlaneFitter::solvePlaneFromScratch(std::uint32_t v, std::span<const Float3> positions,
                                                    std::span<const detail::FixedPoint> quantised) {
-  Moments& m = m_moments[v];
-  m = Moments{};
-  for (auto k = m_hoods.offsets[v]; k < m_hoods.offsets[v + 1]; ++k) {
-    const auto i = m_hoods.indices[k];
-    m.add(quantised[i], 1);
-    m_snapshot[k] = positions[i];
-  }
+  const auto first = m_hoods.offsets[v], last = m_hoods.offsets[v + 1];
+  detail::FixedSums sums;  // a local, as in fitAll: the sums stay in registers
+  for (auto k = first; k < last; ++k)
+    sums.add(quantised[m_hoods.indices[k]], 1);
+  for (auto k = first; k < last; ++k)
+    m_snapshot[k] = positions[m_hoods.indices[k]];
+  static_cast<detail::FixedSums&>(m_moments[v]) = sums;
   solvePlane(v);
 }
 
-void IncrementalPlaneFitter::orientPlanes(std::span<const Float3> positions,
-                                          std::span<const Float3> normals) {
+void IncrementalPlaneFitter::orientPlanes(std::span<const Float3> positions, std::span<const Float3> normals,
+                                          WorkerPool* pool) {
   // Every plane, every update: a vertex or its normal can change while its plane's moments do
   // not (below the tolerance), and this costs a few dot products next to an eigenproblem.
-  for (std::size_t v = 0; v < m_planes.size(); ++v) {
-    const Solved& s = m_solved[v];
-    m_planes[v] = orientPlane(s.normal, m_tolerantMode ? Eigen::Vector3d(s.centroid + s.shift) : s.centroid,
-                              positions[v], normals[v]);
+  const auto orient = [&](std::size_t b, std::size_t e) {
+    for (std::size_t v = b; v < e; ++v) {
+      const Solved& s = m_solved[v];
+      m_planes[v] = orientPlane(s.normal, m_tolerantMode ? Eigen::Vector3d(s.centroid + s.shift) : s.centroid,
+                                positions[v], normals[v]);
+    }
+  };
+  if (pool) {
+    pool->parallelFor(m_planes.size(), kMinPlanesPerThread, orient);
+  } else {
+    orient(0, m_planes.size());
   }
 }
 
@@ -221,7 +233,7 @@ RefitStats IncrementalPlaneFitter::update(std::span<const Float3> positions, std
 }
 
 RefitStats IncrementalPlaneFitter::update(std::span<const Float3> positions, std::span<const Float3> normals,
-                                          const PlaneRefitSettings& refit) {
+                                          const PlaneRefitSettings& refit, WorkerPool* pool) {
   if (!(refit.maxNormalErrorRad > 0.0)) return update(positions, normals, 0.0f);
   if (!m_tolerantMode) {
     snapshotFromFitted();
@@ -234,39 +246,55 @@ RefitStats IncrementalPlaneFitter::update(std::span<const Float3> positions, std
   for (std::size_t v = 0; v < positions.size(); ++v)
     if (!(positions[v] == m_fitted[v])) ++stats.movedVertices, m_fitted[v] = positions[v], m_changed[v] = 1;
   const double theta = refit.maxNormalErrorRad;
-  std::vector<detail::FixedPoint> quantised;
-  for (std::uint32_t j = 0; j < m_hoods.vertexCount(); ++j) {
-    const auto first = m_hoods.offsets[j], last = m_hoods.offsets[j + 1];
-    bool changed = false;
-    for (auto k = first; k < last && !changed; ++k)
-      changed = m_changed[m_hoods.indices[k]] != 0;
-    if (!changed) continue;
-    // The members' displacements since the plane's last solve: their mean moves the centroid,
-    // their centred RMS rho can turn the normal by up to rho K_j (header). Taken relative to
-    // the first member's so that a large common translation cancels before the float sums.
-    const Float3 base = positions[m_hoods.indices[first]] - m_snapshot[first];
-    Float3 sum{0.0f, 0.0f, 0.0f};
-    float sum2 = 0.0f;
-    for (auto k = first + 1; k < last; ++k) {
-      const Float3 e = (positions[m_hoods.indices[k]] - m_snapshot[k]) - base;
-      sum = sum + e, sum2 += dot(e, e);
-    }
-    const float n = float(last - first);
-    const Float3 mean = {sum.x / n, sum.y / n, sum.z / n};
-    const double rho = std::sqrt(std::max(double(sum2) / double(n) - double(dot(mean, mean)), 0.0));
-    Solved& s = m_solved[j];
-    const double tol = theta * double(s.tolerancePerRad) - kQuantisationSlackMm;
-    if (rho > tol) {
-      if (quantised.empty()) quantised = quantiseAll(positions, m_origin);  // once per update
-      solvePlaneFromScratch(j, positions, quantised);
-      ++stats.refittedPlanes;
-    } else {
-      s.shift = {double(base.x) + double(mean.x), double(base.y) + double(mean.y),
-                 double(base.z) + double(mean.z)};
-    }
+  const auto quantised =
+      stats.movedVertices ? quantiseAll(positions, m_origin) : std::vector<detail::FixedPoint>{};
+  std::atomic<std::size_t> refitted{0};
+  // Planes are independent (each reads positions, writes only its own state), so they split
+  // over the pool; the result does not depend on the number of threads.
+  const auto planes = [&](std::size_t b, std::size_t e) {
+    std::size_t count = 0;
+    for (auto j = std::uint32_t(b); j < e; ++j)
+      count += refitPlaneWithin(j, positions, quantised, theta) ? 1 : 0;
+    refitted += count;
+  };
+  if (pool && stats.movedVertices) {
+    pool->parallelFor(m_hoods.vertexCount(), kMinPlanesPerThread, planes);
+  } else if (stats.movedVertices) {
+    planes(0, m_hoods.vertexCount());
   }
-  orientPlanes(positions, normals);
+  stats.refittedPlanes = refitted.load();
+  orientPlanes(positions, normals, pool);
   return stats;
+}
+
+bool IncrementalPlaneFitter::refitPlaneWithin(std::uint32_t j, std::span<const Float3> positions,
+                                              std::span<const detail::FixedPoint> quantised, double theta) {
+  const auto first = m_hoods.offsets[j], last = m_hoods.offsets[j + 1];
+  bool changed = false;
+  for (auto k = first; k < last && !changed; ++k)
+    changed = m_changed[m_hoods.indices[k]] != 0;
+  if (!changed) return false;  // nothing moved since the previous update: keep the state, shift too
+  // The members' displacements since the plane's last solve: their mean moves the centroid,
+  // their centred RMS rho can turn the normal by up to rho K_j (header). Taken relative to the
+  // first member's so that a large common translation cancels before the float sums.
+  const Float3 base = positions[m_hoods.indices[first]] - m_snapshot[first];
+  Float3 sum{0.0f, 0.0f, 0.0f};
+  float sum2 = 0.0f;
+  for (auto k = first + 1; k < last; ++k) {
+    const Float3 e = (positions[m_hoods.indices[k]] - m_snapshot[k]) - base;
+    sum = sum + e, sum2 += dot(e, e);
+  }
+  const float n = float(last - first);
+  const Float3 mean = {sum.x / n, sum.y / n, sum.z / n};
+  const double rho = std::sqrt(std::max(double(sum2) / double(n) - double(dot(mean, mean)), 0.0));
+  Solved& s = m_solved[j];
+  if (rho > theta * double(s.tolerancePerRad) - kQuantisationSlackMm) {
+    solvePlaneFromScratch(j, positions, quantised);
+    return true;
+  }
+  s.shift = {double(base.x) + double(mean.x), double(base.y) + double(mean.y),
+             double(base.z) + double(mean.z)};
+  return false;
 }
 
 RefitStats IncrementalPlaneFitter::updateMoved(std::span<const Float3> positions,

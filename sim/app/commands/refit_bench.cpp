@@ -195,7 +195,7 @@ int runScenario(const BenchOptions& o, const GlobalOptions& global) {
     std::vector<double> tol;
     for (float t : tolerant->planeFitter().toleranceMmPerRad())
       tol.push_back(theta * double(t));
-    out["vertex_tolerance_mm"] = {
+    out["plane_tolerance_mm"] = {
         {"p10", percentile(tol, 0.1)}, {"median", percentile(tol, 0.5)}, {"p90", percentile(tol, 0.9)}};
   }
   out["normals_ms_median"] = median(normalsMs);

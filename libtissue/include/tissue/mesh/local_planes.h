@@ -21,6 +21,8 @@
 
 namespace tissue::mesh {
 
+class WorkerPool;
+
 namespace detail {
 struct FixedPoint;  // a quantised position, libtissue/src/mesh/fixed_moments.h
 }  // namespace detail
@@ -134,8 +136,10 @@ class IncrementalPlaneFitter {
   /// Tolerant re-fit (see PlaneRefitSettings): afterwards every normal N_S is within
   /// `refit.maxNormalErrorRad` of a full re-fit of `positions` (to first order in the angle).
   /// A bound of 0 is update(positions, normals, 0.0f).
+  /// \param pool  splits the planes over its threads (nullptr: the caller's only); the result
+  ///              does not depend on it
   RefitStats update(std::span<const Float3> positions, std::span<const Float3> normals,
-                    const PlaneRefitSettings& refit);
+                    const PlaneRefitSettings& refit, WorkerPool* pool = nullptr);
 
   /// Incremental re-fit when the caller knows which vertices moved.
   RefitStats updateMoved(std::span<const Float3> positions, std::span<const Float3> normals,
@@ -154,7 +158,10 @@ class IncrementalPlaneFitter {
   RefitStats foldAndSolve(std::span<const Float3> positions, std::span<const Float3> normals,
                           std::span<const std::uint32_t> movedVertices);
   void solvePlane(std::uint32_t v);
-  void orientPlanes(std::span<const Float3> positions, std::span<const Float3> normals);
+  void orientPlanes(std::span<const Float3> positions, std::span<const Float3> normals,
+                    WorkerPool* pool = nullptr);
+  bool refitPlaneWithin(std::uint32_t j, std::span<const Float3> positions,
+                        std::span<const detail::FixedPoint> quantised, double theta);
   void solvePlaneFromScratch(std::uint32_t v, std::span<const Float3> positions,
                              std::span<const detail::FixedPoint> quantised);
   void snapshotFromFitted();
