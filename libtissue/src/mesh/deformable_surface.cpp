@@ -1,6 +1,7 @@
 #include "tissue/mesh/deformable_surface.h"
 
 #include <algorithm>
+#include <type_traits>
 #include <unordered_map>
 
 #include "tissue/core/stopwatch.h"
@@ -52,7 +53,7 @@ std::vector<std::uint32_t> findBoundary(std::span<const Triangle> tris, std::siz
 }  // namespace
 
 Result<DeformableSurface> DeformableSurface::create(SurfaceMesh mesh, const PlaneFitSettings& planeSettings,
-                                                    unsigned threadCount) {
+                                                    unsigned threadCount, const PlaneRefitSettings& refit) {
   if (auto ok = validateMesh(mesh, "deformable surface"); !ok) return ok.error();
   if (!mesh.hasUvs()) {
     return Error{
@@ -65,13 +66,17 @@ Result<DeformableSurface> DeformableSurface::create(SurfaceMesh mesh, const Plan
   }
   auto geoRest = geometricPositionsOf(mesh);
   auto geoTris = geometricTrianglesOf(mesh);
+  if (!(refit.maxNormalErrorRad >= 0.0)) {
+    return Error{
+        "deformable surface: plane re-fit needs maxNormalErrorRad >= 0 rad (0: exact); fix the setting"};
+  }
   return DeformableSurface(std::move(mesh), std::move(geoRest), std::move(geoTris), planeSettings,
-                           threadCount);
+                           threadCount, refit);
 }
 
 DeformableSurface::DeformableSurface(SurfaceMesh mesh, std::vector<Float3> geoRest,
                                      std::vector<Triangle> geoTriangles, const PlaneFitSettings& settings,
-                                     unsigned threadCount)
+                                     unsigned threadCount, const PlaneRefitSettings& refit)
     : m_mesh(std::move(mesh)),
       m_geoRest(std::move(geoRest)),
       m_geoPositions(m_geoRest),
@@ -79,6 +84,7 @@ DeformableSurface::DeformableSurface(SurfaceMesh mesh, std::vector<Float3> geoRe
       m_boundary(findBoundary(m_geoTriangles, m_geoRest.size())),
       m_geoNormals(m_geoRest.size()),
       m_fitter(m_geoRest, m_geoTriangles, settings),
+      m_refit(refit),
       m_normals(m_mesh.positions.size()),
       m_tangents(m_mesh.positions.size()),
       m_planes(m_mesh.positions.size()),
@@ -109,7 +115,9 @@ unsigned DeformableSurface::threadCount() const {
   return m_pool->threadCount();
 }
 
-SurfaceUpdateStats DeformableSurface::update(std::span<const Float3> geometricPositions, float toleranceMm) {
+template <class Refit>
+SurfaceUpdateStats DeformableSurface::updateWith(std::span<const Float3> geometricPositions,
+                                                 const Refit& refit) {
   SurfaceUpdateStats stats;
   Stopwatch clock;
   // Phase: positions in (geometric -> render vertices).
@@ -121,9 +129,13 @@ SurfaceUpdateStats DeformableSurface::update(std::span<const Float3> geometricPo
   clock.restart();
   computeNormals();
   stats.normalsMs = clock.elapsedMs();
-  // Phase: local planes, re-fitted only where a neighbourhood moved.
+  // Phase: local planes, re-fitted only where a neighbourhood moved enough to matter.
   clock.restart();
-  stats.refit = m_fitter.update(m_geoPositions, m_geoNormals, toleranceMm);
+  if constexpr (std::is_same_v<Refit, PlaneRefitSettings>) {
+    stats.refit = m_fitter.update(m_geoPositions, m_geoNormals, refit, m_pool.get());
+  } else {
+    stats.refit = m_fitter.update(m_geoPositions, m_geoNormals, refit);
+  }
   copyPlanes();
   stats.planesMs = clock.elapsedMs();
   // Phase: tangent frames, per render vertex from each chart's own UVs.
@@ -131,6 +143,14 @@ SurfaceUpdateStats DeformableSurface::update(std::span<const Float3> geometricPo
   computeTangents();
   stats.tangentsMs = clock.elapsedMs();
   return stats;
+}
+
+SurfaceUpdateStats DeformableSurface::update(std::span<const Float3> geometricPositions) {
+  return updateWith(geometricPositions, m_refit);
+}
+
+SurfaceUpdateStats DeformableSurface::update(std::span<const Float3> geometricPositions, float toleranceMm) {
+  return updateWith(geometricPositions, toleranceMm);
 }
 
 void DeformableSurface::refitAllPlanes() {

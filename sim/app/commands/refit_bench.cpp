@@ -1,23 +1,31 @@
 // tissue-sim refit-bench: full versus incremental re-fit of the local planes (François §2.2)
-// after a local poke and after a global deformation, with the largest deviation between them.
+// after a local poke and after a global deformation, with the largest deviation between them;
+// with --scenario, frame by frame under the simulator, exact against tolerant (issue 11).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
 
 #include "command.h"
 #include "deformations.h"
+#include "material_file.h"
 #include "output.h"
 #include "tissue/core/stopwatch.h"
 #include "tissue/mesh/deformable_surface.h"
 #include "tissue/mesh/load_mesh.h"
 #include "tissue/mesh/local_planes.h"
 #include "tissue/mesh/vertex_normals.h"
+#include "tissue/scenario/scenario.h"
+#include "tissue/scenario/scenario_run.h"
 
 namespace tissue::sim_app {
 namespace {
 
 struct BenchOptions {
   std::string meshFile;
+  std::string scenarioFile;
+  int frames = 0;  // 0: the scenario's
+  double maxNormalErrorRad = mesh::PlaneRefitSettings{}.maxNormalErrorRad;
   double pokeFraction = 0.05;
   float scale = 1.0f;
   float sigma_t = 1.5f;  // mm^-1, François Table 1 "organs" (smallest channel)
@@ -25,24 +33,31 @@ struct BenchOptions {
   int repeats = 0;  // 0: choose from the mesh size
 };
 
-double median(std::vector<double> v) {
+double percentile(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
+  return v[std::min(v.size() - 1, std::size_t(q * double(v.size())))];
+}
+
+double median(std::vector<double> v) {
+  return percentile(std::move(v), 0.5);
 }
 
 /// Times full and incremental re-fits between the rest state and `deformed`, alternating so
 /// each incremental update moves the same vertices; returns the figures as JSON.
 nlohmann::json measure(std::span<const Float3> rest, std::span<const Float3> deformed,
-                       std::span<const Triangle> tris, const mesh::PlaneFitSettings& settings, int repeats) {
+                       std::span<const Triangle> tris, const mesh::PlaneFitSettings& settings, int repeats,
+                       const mesh::PlaneRefitSettings& refit) {
   std::vector<Float3> restNormals(rest.size()), defNormals(rest.size());
   mesh::computeVertexNormals(rest, tris, restNormals);
   mesh::computeVertexNormals(deformed, tris, defNormals);
-  mesh::IncrementalPlaneFitter fitter(rest, tris, settings);
+  mesh::IncrementalPlaneFitter fitter(rest, tris, settings), tolerant(rest, tris, settings);
   fitter.fitAll(rest, restNormals);
+  tolerant.fitAll(rest, restNormals);
   std::vector<Float4> full(rest.size());
-  std::vector<double> fullMs, incMs;
-  mesh::RefitStats stats;
-  double worstAngle = 0.0, worstOffset = 0.0;
+  std::vector<double> fullMs, incMs, tolMs;
+  mesh::RefitStats stats, tolStats;
+  double worstAngle = 0.0, worstOffset = 0.0, tolAngle = 0.0, tolOffset = 0.0;
   for (int r = 0; r < repeats; ++r) {
     Stopwatch clock;
     mesh::fitVertexPlanes(deformed, defNormals, fitter.neighbourhoods(), full);
@@ -50,10 +65,17 @@ nlohmann::json measure(std::span<const Float3> rest, std::span<const Float3> def
     clock.restart();
     stats = fitter.update(deformed, defNormals);
     incMs.push_back(clock.elapsedMs());
+    clock.restart();
+    tolStats = tolerant.update(deformed, defNormals, refit);
+    tolMs.push_back(clock.elapsedMs());
     const auto dev = mesh::comparePlanes(fitter.planes(), full);
     worstAngle = std::max(worstAngle, dev.maxAngleRad);
     worstOffset = std::max(worstOffset, dev.maxOffsetMm);
+    const auto tdev = mesh::comparePlanes(tolerant.planes(), full);
+    tolAngle = std::max(tolAngle, tdev.maxAngleRad);
+    tolOffset = std::max(tolOffset, tdev.maxOffsetMm);
     fitter.update(rest, restNormals);  // back to rest (same vertices move), untimed
+    tolerant.update(rest, restNormals, refit);
   }
   const double f = median(fullMs), i = median(incMs);
   nlohmann::json out;
@@ -64,10 +86,134 @@ nlohmann::json measure(std::span<const Float3> rest, std::span<const Float3> def
   out["speedup"] = f / std::max(i, 1e-9);
   out["max_normal_deviation_rad"] = worstAngle;
   out["max_offset_deviation_mm"] = worstOffset;
+  out["tolerant"] = {{"max_normal_error_rad", refit.maxNormalErrorRad},
+                     {"refitted_fraction", double(tolStats.refittedPlanes) / double(rest.size())},
+                     {"refit_ms", median(tolMs)},
+                     {"max_normal_deviation_rad", tolAngle},
+                     {"max_offset_deviation_mm", tolOffset}};
   return out;
 }
 
+/// Per-frame figures of one DeformableSurface under the simulator.
+struct SeriesStats {
+  std::vector<double> planesMs;
+  double refitted = 0.0;  // sum of per-frame fractions
+  double maxAngle = 0.0, maxOffset = 0.0;
+  void add(const mesh::SurfaceUpdateStats& u, std::size_t vertices, const mesh::PlaneDeviation& d) {
+    planesMs.push_back(u.planesMs);
+    refitted += double(u.refit.refittedPlanes) / double(vertices);
+    maxAngle = std::max(maxAngle, d.maxAngleRad), maxOffset = std::max(maxOffset, d.maxOffsetMm);
+  }
+  nlohmann::json json(double refitRad) const {
+    return {{"max_normal_error_rad", refitRad},
+            {"mean_refitted_fraction", refitted / double(std::max<std::size_t>(planesMs.size(), 1))},
+            {"planes_ms_median", percentile(planesMs, 0.5)},
+            {"planes_ms_p99", percentile(planesMs, 0.99)},
+            {"planes_ms_max", percentile(planesMs, 1.0)},
+            {"max_normal_deviation_rad", maxAngle},
+            {"max_offset_deviation_mm", maxOffset}};
+  }
+};
+
+/// The simulator drives two surfaces, the exact re-fit (bound 0) and the tolerant one; each
+/// frame both are compared with a full re-fit of the simulated positions.
+int runScenario(const BenchOptions& o, const GlobalOptions& global) {
+  auto parsed = scenario::loadScenario(o.scenarioFile, {.sharedMeshesDir = sharedDir() / "meshes"});
+  if (!parsed) return fail("refit-bench", parsed.error().message);
+  if (o.frames < 0) return fail("refit-bench", "--frames must be at least 1 (0: the scenario's)");
+  if (o.frames > 0) parsed->frames = o.frames;
+  if (!(o.maxNormalErrorRad >= 0.0))
+    return fail("refit-bench", "--max-normal-error must be >= 0 rad (0: exact); give e.g. 1e-4");
+  auto loaded = mesh::loadMesh(parsed->mesh, {.requireUvs = true, .scaleToMm = float(parsed->meshScaleToMm)});
+  if (!loaded) return fail("refit-bench", loaded.error().message);
+  auto material = readLayeredMaterial(materialFileFor(parsed->mesh));
+  const mesh::PlaneFitSettings settings{.sigma_t = material ? material->firstLayerMinSigmaT : o.sigma_t,
+                                        .epsilon = o.epsilon};
+  auto exact = mesh::DeformableSurface::create(*loaded, settings, 0, {.maxNormalErrorRad = 0.0});
+  if (!exact) return fail("refit-bench", exact.error().message);
+  auto tolerant =
+      mesh::DeformableSurface::create(*loaded, settings, 0, {.maxNormalErrorRad = o.maxNormalErrorRad});
+  if (!tolerant) return fail("refit-bench", tolerant.error().message);
+  auto run = scenario::ScenarioRun::create(*parsed);
+  if (!run) return fail("refit-bench", run.error().message);
+  const std::size_t n = exact->geometricRestPositions().size();
+  if ((*run)->mesh().positions.size() != n)
+    return fail("refit-bench", o.scenarioFile + ": the simulated mesh has " +
+                                   std::to_string((*run)->mesh().positions.size()) +
+                                   " vertices but the shaded one " + std::to_string(n));
+  const auto tris = exact->geometricTriangles();
+  std::vector<Float3> previous(exact->geometricRestPositions().begin(),
+                               exact->geometricRestPositions().end());
+  std::vector<Float3> normals(n);
+  std::vector<Float4> full(n);
+  SeriesStats before, after;
+  std::vector<double> normalsMs, tangentsMs, fullMs;
+  double changed = 0.0;  // vertices whose position changed at all, summed fractions
+  // How far vertices move per frame: the fraction beyond each step (mm), summed over frames.
+  constexpr std::array<float, 5> kSteps = {1e-5f, 1e-4f, 1e-3f, 1e-2f, 1e-1f};
+  std::array<double, kSteps.size()> stepAbove{};
+  for (int frame = 0; frame < parsed->frames; ++frame) {
+    auto metrics = (*run)->advance();
+    if (!metrics) return fail("refit-bench", metrics.error().message);
+    const std::vector<Float3> positions = (*run)->positions();
+    std::size_t moved = 0;
+    for (std::size_t v = 0; v < n; ++v) {
+      moved += positions[v] == previous[v] ? 0 : 1;
+      const Float3 d{positions[v].x - previous[v].x, positions[v].y - previous[v].y,
+                     positions[v].z - previous[v].z};
+      const float len = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+      for (std::size_t k = 0; k < kSteps.size(); ++k)
+        stepAbove[k] += len > kSteps[k] ? 1.0 / double(n) : 0.0;
+    }
+    changed += double(moved) / double(n);
+    previous = positions;
+    const auto ue = exact->update(positions);
+    const auto ut = tolerant->update(positions);
+    normalsMs.push_back(ut.normalsMs), tangentsMs.push_back(ut.tangentsMs);
+    // The reference: a full re-fit of the simulated positions with their normals.
+    Stopwatch clock;
+    mesh::computeVertexNormals(positions, tris, normals);
+    mesh::fitVertexPlanes(positions, normals, exact->planeFitter().neighbourhoods(), full);
+    fullMs.push_back(clock.elapsedMs());
+    before.add(ue, n, mesh::comparePlanes(exact->planeFitter().planes(), full));
+    after.add(ut, n, mesh::comparePlanes(tolerant->planeFitter().planes(), full));
+  }
+  const double frames = std::max(parsed->frames, 1);
+  nlohmann::json out;
+  out["scenario"] = o.scenarioFile;
+  out["mesh"] = parsed->mesh.string();
+  out["vertices"] = n;
+  out["frames"] = parsed->frames;
+  out["radius_mm"] = settings.radiusMm();
+  out["mean_changed_vertex_fraction"] = changed / frames;
+  nlohmann::json steps = nlohmann::json::object();
+  for (std::size_t k = 0; k < kSteps.size(); ++k)
+    steps[std::to_string(kSteps[k]) + "_mm"] = stepAbove[k] / frames;
+  out["mean_fraction_moving_per_frame_beyond"] = steps;
+  {
+    const double theta = o.maxNormalErrorRad;
+    std::vector<double> tol;
+    for (float t : tolerant->planeFitter().toleranceMmPerRad())
+      tol.push_back(theta * double(t));
+    out["plane_tolerance_mm"] = {
+        {"p10", percentile(tol, 0.1)}, {"median", percentile(tol, 0.5)}, {"p90", percentile(tol, 0.9)}};
+  }
+  out["normals_ms_median"] = median(normalsMs);
+  out["tangents_ms_median"] = median(tangentsMs);
+  out["full_refit_ms_median"] = median(fullMs);
+  out["exact"] = before.json(0.0);
+  out["tolerant"] = after.json(o.maxNormalErrorRad);
+  printResult(global, out);
+  return 0;
+}
+
 int run(const BenchOptions& o, const GlobalOptions& global) {
+  if (!o.scenarioFile.empty()) return runScenario(o, global);
+  if (o.meshFile.empty())
+    return fail("refit-bench", "give --mesh FILE (a poke and a bend) or --scenario FILE");
+  if (!(o.maxNormalErrorRad >= 0.0))
+    return fail("refit-bench", "--max-normal-error must be >= 0 rad (0: exact); give e.g. 1e-4");
+  const mesh::PlaneRefitSettings refit{.maxNormalErrorRad = o.maxNormalErrorRad};
   auto loaded = mesh::loadMesh(o.meshFile, {.scaleToMm = o.scale});
   if (!loaded) return fail("refit-bench", loaded.error().message);
   if (!(o.pokeFraction > 0.0 && o.pokeFraction <= 1.0))
@@ -92,7 +238,7 @@ int run(const BenchOptions& o, const GlobalOptions& global) {
   applyGlobalBend(rest, 0.05f * size, bent);
   const int repeats = o.repeats > 0 ? o.repeats : int(std::clamp<std::size_t>(2000000 / rest.size(), 5, 200));
 
-  nlohmann::json out = measure(rest, poked, tris, settings, repeats);
+  nlohmann::json out = measure(rest, poked, tris, settings, repeats, refit);
   out["mesh"] = o.meshFile;
   out["vertices"] = rest.size();
   out["radius_mm"] = settings.radiusMm();
@@ -109,7 +255,7 @@ int run(const BenchOptions& o, const GlobalOptions& global) {
               << " mm) holds " << out["mean_neighbourhood"].get<double>()
               << " vertices on average; is the mesh in mm? pass --scale (mm per file unit)\n";
   }
-  out["global"] = measure(rest, bent, tris, settings, std::max(3, repeats / 4));
+  out["global"] = measure(rest, bent, tris, settings, std::max(3, repeats / 4), refit);
   printResult(global, out);
   return 0;
 }
@@ -119,7 +265,13 @@ int run(const BenchOptions& o, const GlobalOptions& global) {
 void registerRefitBenchCommand(CLI::App& app, const GlobalOptions& global, int& exitCode) {
   auto o = std::make_shared<BenchOptions>();
   auto* cmd = app.add_subcommand("refit-bench", "time full versus incremental re-fit of the local planes");
-  cmd->add_option("--mesh", o->meshFile, "mesh file (OBJ, PLY, OFF, STL)")->required();
+  cmd->add_option("--mesh", o->meshFile, "mesh file (OBJ, PLY, OFF, STL): a procedural poke and bend");
+  cmd->add_option(
+      "--scenario", o->scenarioFile,
+      "scenario file (JSON): the simulator moves the surface, frame by frame (instead of --mesh)");
+  cmd->add_option("--frames", o->frames, "with --scenario: frames to run (default: the scenario's)");
+  cmd->add_option("--max-normal-error", o->maxNormalErrorRad,
+                  "bound of the tolerant re-fit, rad (default 1e-4; 0: exact)");
   cmd->add_option("--poke-fraction", o->pokeFraction,
                   "fraction of vertices the local poke moves (default 0.05)");
   cmd->add_option("--scale", o->scale, "mm per file unit (default 1)");

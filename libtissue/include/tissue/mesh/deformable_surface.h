@@ -44,16 +44,26 @@ class DeformableSurface {
   /// invalid or has no UVs (tangent frames need them).
   /// \param threadCount  threads for the per-frame update, the caller's included; 0 picks the
   ///                     hardware's concurrency
+  /// \param refit        how closely the incremental planes follow (default: normals within
+  ///                     1e-4 rad of a full re-fit; {.maxNormalErrorRad = 0}: exact)
   static Result<DeformableSurface> create(SurfaceMesh mesh, const PlaneFitSettings& planeSettings = {},
-                                          unsigned threadCount = 0);
+                                          unsigned threadCount = 0, const PlaneRefitSettings& refit = {});
 
   ~DeformableSurface();
   DeformableSurface(DeformableSurface&&) noexcept;
   DeformableSurface& operator=(DeformableSurface&&) noexcept;
 
   /// Moves the surface: `geometricPositions` holds one position (mm) per geometric vertex.
-  /// Vertices that moved less than `toleranceMm` keep their planes.
-  SurfaceUpdateStats update(std::span<const Float3> geometricPositions, float toleranceMm = 0.0f);
+  /// Normals and tangents are recomputed exactly; the planes follow within planeRefit()'s
+  /// bound (a vertex whose motion could not turn a plane normal by that much keeps its planes).
+  SurfaceUpdateStats update(std::span<const Float3> geometricPositions);
+  /// As update(positions), but vertices that moved less than `toleranceMm` (mm, one for all)
+  /// keep their planes; 0 is exact. No bound on the normals' error follows from it.
+  SurfaceUpdateStats update(std::span<const Float3> geometricPositions, float toleranceMm);
+
+  /// How closely the incremental planes follow the positions (for the next updates).
+  void setPlaneRefit(const PlaneRefitSettings& refit) { m_refit = refit; }
+  const PlaneRefitSettings& planeRefit() const { return m_refit; }
 
   /// Re-fits every plane from scratch (the reference for the incremental path).
   void refitAllPlanes();
@@ -80,7 +90,9 @@ class DeformableSurface {
 
  private:
   DeformableSurface(SurfaceMesh mesh, std::vector<Float3> geoRest, std::vector<Triangle> geoTriangles,
-                    const PlaneFitSettings& settings, unsigned threadCount);
+                    const PlaneFitSettings& settings, unsigned threadCount, const PlaneRefitSettings& refit);
+  template <class Refit>
+  SurfaceUpdateStats updateWith(std::span<const Float3> geometricPositions, const Refit& refit);
   void computeNormals();
   void computeTangents();
   void copyPlanes();
@@ -92,6 +104,7 @@ class DeformableSurface {
   std::vector<std::uint32_t> m_boundary;
   std::vector<Float3> m_geoNormals;
   IncrementalPlaneFitter m_fitter;
+  PlaneRefitSettings m_refit;
   std::vector<Float3> m_normals;
   std::vector<Float4> m_tangents;
   std::vector<Float4> m_planes;
