@@ -61,7 +61,8 @@ std::string markdownReport(const nlohmann::json& r) {
   md << "\n## Incremental plane re-fit\n\n"
      << "- planes re-fitted per frame (mean): " << r["refit"]["mean_refitted_fraction"] << " of all\n"
      << "- largest deviation from a full re-fit at the last frame: " << r["refit"]["max_normal_deviation_rad"]
-     << " rad, " << r["refit"]["max_offset_deviation_mm"] << " mm\n";
+     << " rad (stated tolerance " << r["refit"]["tolerance_rad"] << " rad), "
+     << r["refit"]["max_offset_deviation_mm"] << " mm\n";
   if (r.contains("render")) {
     md << "\n## Render\n\n"
        << "GL: " << r["render"]["gl_context"].get<std::string>() << ", "
@@ -331,6 +332,7 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
   report["instrument"] = instrumentReport(r);
   report["phases_ms"] = phaseReport(r.phases);
   report["refit"] = {{"mean_refitted_fraction", r.refittedFraction},
+                     {"tolerance_rad", d.loop->surface().planeRefit().maxNormalErrorRad},
                      {"max_normal_deviation_rad", deviation.maxAngleRad},
                      {"max_offset_deviation_mm", deviation.maxOffsetMm}};
   report["out"] = o.outDir.string();

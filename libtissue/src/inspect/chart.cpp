@@ -116,7 +116,8 @@ Result<void> writeLineChart(const std::filesystem::path& png, const ChartSetting
     // A right margin as wide as the legend (about 8 px per character at 13 pt, plus the swatch),
     // and the legend placed in it, outside the plot area.
     std::size_t longest = 0;
-    for (const auto& s : series) longest = std::max(longest, s.label.size());
+    for (const auto& s : series)
+      longest = std::max(longest, s.label.size());
     const int margin = std::min(settings.widthPx / 2, 60 + 8 * static_cast<int>(longest));
     chart->SetAutoSize(true);
     chart->SetBorders(70, 60, margin, 50);

@@ -61,7 +61,8 @@ Result<OrganLoop> OrganLoop::create(const scenario::Scenario& scenario, SurfaceM
                                     const OrganLoopConfig& config) {
   auto impl = std::make_unique<Impl>();
   impl->config = config;
-  auto shaded = mesh::DeformableSurface::create(std::move(surface), config.planes, config.meshThreads);
+  auto shaded =
+      mesh::DeformableSurface::create(std::move(surface), config.planes, config.meshThreads, config.refit);
   if (!shaded) return shaded.error();
   impl->surface.emplace(std::move(*shaded));
   auto run = scenario::ScenarioRun::create(scenario);
@@ -160,7 +161,7 @@ Result<LoopFrame> OrganLoop::advance(const InstrumentInput& input, const RenderR
 
   // 2 mesh: positions in, normals, planes (incremental re-fit), tangent frames.
   phase.restart();
-  f.mesh = s.surface->update(s.positions, s.config.refitToleranceMm);
+  f.mesh = s.surface->update(s.positions);
   f.ms.meshMs = phase.elapsedMs();
 
   // 3 upload: what deforms, in place (the topology and UVs never change).

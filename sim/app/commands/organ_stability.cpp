@@ -25,14 +25,17 @@ struct OrganStabilityOptions {
 
 nlohmann::json rowJson(const scenario::OrganStabilityRow& r) {
   auto optional = [](const auto& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
-  return {{"integrator", sim::integratorName(r.integrator)},
-          {"youngs_modulus_kpa", r.youngsModulusKpa},
-          {"max_stable_step_ms", r.maxStableStepS ? nlohmann::json(*r.maxStableStepS * 1e3) : nlohmann::json(nullptr)},
-          {"stable_at_max_tested", r.stableAtMaxTested},
-          {"substeps_per_60hz_frame", optional(r.substepsPerFrame)},
-          {"ms_per_frame_median", r.substepsPerFrame ? nlohmann::json(r.msPerFrameMedian) : nlohmann::json(nullptr)},
-          {"ms_per_frame_max", r.substepsPerFrame ? nlohmann::json(r.msPerFrameMax) : nlohmann::json(nullptr)},
-          {"trials", r.trials}};
+  return {
+      {"integrator", sim::integratorName(r.integrator)},
+      {"youngs_modulus_kpa", r.youngsModulusKpa},
+      {"max_stable_step_ms",
+       r.maxStableStepS ? nlohmann::json(*r.maxStableStepS * 1e3) : nlohmann::json(nullptr)},
+      {"stable_at_max_tested", r.stableAtMaxTested},
+      {"substeps_per_60hz_frame", optional(r.substepsPerFrame)},
+      {"ms_per_frame_median",
+       r.substepsPerFrame ? nlohmann::json(r.msPerFrameMedian) : nlohmann::json(nullptr)},
+      {"ms_per_frame_max", r.substepsPerFrame ? nlohmann::json(r.msPerFrameMax) : nlohmann::json(nullptr)},
+      {"trials", r.trials}};
 }
 
 std::string markdown(const std::vector<scenario::OrganStabilityRow>& rows, double maxStepMs) {
@@ -63,7 +66,8 @@ std::vector<inspect::ChartSeries> seriesBy(const std::vector<scenario::OrganStab
                                            const std::vector<sim::Integrator>& integrators, Y y) {
   std::vector<inspect::ChartSeries> out;
   for (sim::Integrator integrator : integrators) {
-    inspect::ChartSeries s{.label = std::string(sim::integratorName(integrator)), .x = {}, .y = {}, .lines = true};
+    inspect::ChartSeries s{
+        .label = std::string(sim::integratorName(integrator)), .x = {}, .y = {}, .lines = true};
     for (const auto& r : rows)
       if (r.integrator == integrator)
         if (auto v = y(r)) s.x.push_back(r.youngsModulusKpa), s.y.push_back(*v);
@@ -87,7 +91,8 @@ Result<nlohmann::json> run(const OrganStabilityOptions& o) {
                    {"min_step_ms", config.minStepS * 1e3},
                    {"max_step_ms", config.maxStepS * 1e3},
                    {"rows", nlohmann::json::array()}};
-  for (const auto& r : *rows) j["rows"].push_back(rowJson(r));
+  for (const auto& r : *rows)
+    j["rows"].push_back(rowJson(r));
   if (!o.out.empty()) {
     const std::string md = markdown(*rows, config.maxStepS * 1e3);
     if (auto w = writeTextFileAtomic(o.out / "organ_stability.md", md); !w) return w.error();
@@ -128,12 +133,13 @@ Result<nlohmann::json> run(const OrganStabilityOptions& o) {
 
 void registerOrganStabilityCommand(CLI::App& app, const GlobalOptions& global, int& exitCode) {
   auto o = std::make_shared<OrganStabilityOptions>();
-  auto* cmd = app.add_subcommand("organ-stability",
-                                 "the largest stable frame step and the 60 Hz cost of each integrator on the organ");
+  auto* cmd = app.add_subcommand(
+      "organ-stability", "the largest stable frame step and the 60 Hz cost of each integrator on the organ");
   cmd->add_option("--scenario", o->scenario, "scenario with a tissue block (default: the data liver's)");
   cmd->add_option("--moduli", o->moduli, "Young's moduli in kPa (default 2 5 20 80)")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--window", o->windowS, "simulated seconds per trial (default 3.5: through the deepest poke)")
+  cmd->add_option("--window", o->windowS,
+                  "simulated seconds per trial (default 3.5: through the deepest poke)")
       ->check(CLI::Range(0.05, 60.0));
   cmd->add_option("--out", o->out, "folder for organ_stability.md, .json and the charts");
   cmd->callback([o, &global, &exitCode] {

@@ -65,7 +65,9 @@ struct RenderRequest {
 /// Settings of the loop (plain struct with defaults).
 struct OrganLoopConfig {
   mesh::PlaneFitSettings planes{};  ///< the local planes (sigma_t mm^-1 sets their radius)
-  float refitToleranceMm = 0.0f;    ///< vertices moving less keep their planes (0: exact re-fit)
+  /// The incremental re-fit's stated tolerance: normals within 1e-4 rad of a full re-fit by
+  /// default; maxNormalErrorRad = 0 re-fits exactly (bit-identical to a full re-fit).
+  mesh::PlaneRefitSettings refit{};
   unsigned meshThreads = 0;         ///< threads of the mesh update (0: the hardware's)
   bool uploadPlanes = false;        ///< create the renderer mesh with planes and upload them each frame
   bool drawInstrument = true;       ///< attach() also uploads the scenario's instrument (instrumentObject())

@@ -21,13 +21,13 @@ struct OrganStabilityConfig {
   std::vector<sim::Integrator> integrators{sim::Integrator::ExplicitEuler, sim::Integrator::SymplecticEuler,
                                            sim::Integrator::VelocityVerlet, sim::Integrator::ImplicitEuler,
                                            sim::Integrator::FastMassSpring};
-  double windowS = 3.5;         ///< s simulated per trial: the approach and the deepest poke
-  double minStepS = 1e-4;       ///< s, smallest frame step tried (0.1 ms: 35,000 steps per 3.5 s window)
+  double windowS = 3.5;          ///< s simulated per trial: the approach and the deepest poke
+  double minStepS = 1e-4;        ///< s, smallest frame step tried (0.1 ms: 35,000 steps per 3.5 s window)
   double maxStepS = 1.0 / 30.0;  ///< s, largest frame step tried (two 60 Hz frames)
-  int bisections = 6;           ///< halvings of the log-step interval after the bracket (to 1/64 of its
-                                ///< log range: about 8% in step)
-  double frameS = 1.0 / 60.0;   ///< s, the render frame the cost is measured for
-  int maxSubsteps = 1024;       ///< the cost search gives up beyond this many substeps per frame
+  int bisections = 6;            ///< halvings of the log-step interval after the bracket (to 1/64 of its
+                                 ///< log range: about 8% in step)
+  double frameS = 1.0 / 60.0;    ///< s, the render frame the cost is measured for
+  int maxSubsteps = 1024;        ///< the cost search gives up beyond this many substeps per frame
 };
 
 /// One integrator at one modulus.
