@@ -18,8 +18,8 @@
 #include "tissue/sim/instrument.h"
 #include "tissue/sim/integrators.h"
 #include "tissue/sim/lattice.h"
-#include "tissue/sim/simulator.h"
 #include "tissue/sim/mass.h"
+#include "tissue/sim/simulator.h"
 #include "tissue/sim/spring_network.h"
 #include "tissue/sim/system.h"
 
