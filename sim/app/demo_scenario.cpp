@@ -30,14 +30,17 @@ void instrumentMarkdown(const nlohmann::json& i, std::ostringstream& md) {
   md << "## Instrument\n\n"
      << "- frames: " << i["frames"] << ", frames with NaN: " << i["nan_frames"]
      << ", divergence events: " << i["divergence_events"] << "\n"
-     << "- contact force on the tool: max " << i["max_contact_force_N"] << " N, mean "
-     << i["mean_contact_force_N"] << " N (every frame in report.json and frames.csv)\n"
+     << "- contact force on the tool: max " << rounded(i["max_contact_force_N"].get<double>()) << " N, mean "
+     << rounded(i["mean_contact_force_N"].get<double>()) << " N (every frame in report.json and frames.csv)\n"
+     << "- deepest push " << rounded(i["max_push_N"].get<double>()) << " N, strongest pull while grasping "
+     << rounded(i["max_pull_N"].get<double>()) << " N\n"
      << "- deepest poke at frame " << i["poked_frame"] << ", strongest lift at frame " << i["lifted_frame"]
      << "\n\n"
      << "| frame | F_x (N) | F_y (N) | F_z (N) |\n|---|---|---|---|\n";
   const auto& forces = i["contact_force_N_per_frame"];
   for (std::size_t f = 0; f < forces.size(); f += 50)
-    md << "| " << f << " | " << forces[f][0] << " | " << forces[f][1] << " | " << forces[f][2] << " |\n";
+    md << "| " << f << " | " << rounded(forces[f][0].get<double>()) << " | "
+       << rounded(forces[f][1].get<double>()) << " | " << rounded(forces[f][2].get<double>()) << " |\n";
 }
 
 std::string markdownReport(const nlohmann::json& r) {
@@ -249,13 +252,19 @@ nlohmann::json writeSequenceMontage(const std::filesystem::path& dir, const std:
 nlohmann::json instrumentReport(const LoopResult& r) {
   const auto s = scenario::summarize(r.frames);
   nlohmann::json forces = nlohmann::json::array();
-  for (const auto& f : r.frames)
+  double push = 0.0, pull = 0.0;  // N along +z (the tool pushed up) without a grasp; -z while grasping
+  for (const auto& f : r.frames) {
     forces.push_back({f.forceN.x, f.forceN.y, f.forceN.z});
+    if (f.grasped == 0) push = std::max(push, f.forceN.z);
+    if (f.grasped > 0) pull = std::max(pull, -f.forceN.z);
+  }
   return {{"frames", s.frames},
           {"nan_frames", s.nanFrames},
           {"divergence_events", s.divergenceEvents},
           {"max_contact_force_N", s.maxForceN},
           {"mean_contact_force_N", s.meanForceN},
+          {"max_push_N", push},
+          {"max_pull_N", pull},
           {"poked_frame", r.pokedFrame},
           {"lifted_frame", r.liftedFrame},
           {"ms_per_frame",

@@ -21,7 +21,7 @@ struct InstrumentMesh {
 
 /// How to draw it (plain struct with defaults).
 struct InstrumentLook {
-  double shaftLengthMm = 120.0;             ///< mm, from the tip centre along the shaft direction
+  double shaftLengthMm = 60.0;              ///< mm, from the tip centre along the shaft direction
   double shaftRadiusFraction = 0.45;        ///< shaft radius as a fraction of the tip radius
   Float3 shaftDirection{0.0f, 0.0f, 1.0f};  ///< unit, tip towards the handle (a sphere has no axis)
   int segments = 32;                        ///< around the axis
