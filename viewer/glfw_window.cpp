@@ -109,8 +109,11 @@ Result<Image8> Window::readBackBuffer() const {
   readBuffer(kBack);
   readPixels(0, 0, width, height, kRgba, kUnsignedByte, bottomUp.at(0, 0));
   Image8 image(width, height, 4);
-  for (int y = 0; y < height; ++y)
+  for (int y = 0; y < height; ++y) {
     std::copy_n(bottomUp.at(0, height - 1 - y), std::size_t(width) * 4, image.at(0, y));
+    for (int x = 0; x < width; ++x)
+      image.at(x, y)[3] = 255;  // the panel's blending leaves alpha below 1; a screenshot is opaque
+  }
   return image;
 }
 

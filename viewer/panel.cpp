@@ -19,7 +19,7 @@ void figure(const char* name, double value, const char* unit) {
 /// The method switches: one radio button per method the organ offers.
 void methodSwitches(const PanelView& v, PanelActions& a) {
   for (std::size_t i = 0; i < v.methods.size(); ++i) {
-    if (i % 3) ImGui::SameLine();
+    if (i % 2) ImGui::SameLine(130);  // two columns: "texture-space" fits
     if (ImGui::RadioButton(v.methods[i].c_str(), v.method == i) && v.method != i) a.method = i;
   }
 }
@@ -88,8 +88,8 @@ PanelActions Panel::build(const PanelView& v) {
   figure("render", v.ms.renderMs, "ms");
   figure("panel", v.panelMs, "ms");
   ImGui::Separator();
-  char force[32];
-  std::snprintf(force, sizeof force, "%.3f N", v.forceN);
+  char force[48];
+  std::snprintf(force, sizeof force, "force %.3f N (of %.2g)", v.forceN, v.forceScaleN);
   ImGui::ProgressBar(float(std::clamp(v.forceN / v.forceScaleN, 0.0, 1.0)), ImVec2(-1, 0), force);
   ImGui::Text("contacts %u, depth %.0f mm", v.contacts, double(v.toolDepthMm));
   if (ImGui::Button(v.grasped ? "release (G)" : "grasp (G)")) a.toggleGrasp = true;

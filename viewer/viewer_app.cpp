@@ -90,6 +90,16 @@ void report(Viewer& v, FrameTimer& timer) {
   std::fflush(stdout);
 }
 
+/// The force bar's full length (N): the first of 0.01, 0.02, 0.05, 0.1, ... N at or above the
+/// largest force so far (a surface-spring liver pushes back with millinewtons, a stiff lattice
+/// with newtons).
+double forceBarScaleN(double maxForceN) {
+  for (double decade = 0.01; decade < 100.0; decade *= 10.0)
+    for (double m : {1.0, 2.0, 5.0})
+      if (m * decade >= maxForceN) return m * decade;
+  return 100.0;
+}
+
 /// The panel's view of the viewer now.
 PanelView panelView(const Viewer& v, const FrameTimer& timer) {
   PanelView p;
@@ -99,6 +109,7 @@ PanelView panelView(const Viewer& v, const FrameTimer& timer) {
   p.panelMs = timer.lastMeanMs(Phase::Panel);
   p.presentMs = timer.lastMeanMs(Phase::Present);
   p.forceN = v.last.simulation.forceMagnitudeN;
+  p.forceScaleN = forceBarScaleN(v.maxForceN);
   p.contacts = v.last.simulation.contacts;
   p.grasped = v.last.simulation.grasped;
   p.toolDepthMm = v.tool ? v.tool->depthMm() : 0.0f;

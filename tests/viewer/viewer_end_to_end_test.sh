@@ -4,7 +4,7 @@
 #  1 the scripted poke (the scenario's own instrument path, no input) for 200 frames, recorded:
 #    the screenshot shows the organ, the steel-grey instrument and the panel; the log names the
 #    simulate phase, and the force is non-zero around the deepest poke (frames 180-200);
-#  2 that session replayed (--replay), with texture-space diffusion recorded as the method: the
+#  2 that session replayed (--replay), with layered parallax recorded as the method: the
 #    same forces frame by frame (deterministic), the method switched, the same checks;
 #  3 the ray-march method for a few frames: an organ, and not the lit picture;
 #  4 a session of tissue-sim demo --record replays in the viewer.
@@ -36,7 +36,7 @@ pictures() {  # pictures NAME: organ, instrument right of the panel, panel
     python3 "$check" panel "$dir/$1.png" 1500 || exit 1
 }
 
-run poke --frames 200 --poke-script --method texture-space --record "$dir/poke_session.json"
+run poke --frames 200 --poke-script --method parallax --record "$dir/poke_session.json"
 grep -q "| simulate [0-9.]* |" "$dir/poke.log" || { echo "FAIL: the per-frame log does not name the simulate phase"; exit 1; }
 grep -q "force [0-9.]* N" "$dir/poke.log" || { echo "FAIL: the per-frame log does not give the force"; exit 1; }
 grep -q "recorded 200 frames" "$dir/poke.log" || { echo "FAIL: the session was not saved"; exit 1; }
@@ -55,7 +55,7 @@ worst = max(abs(float(x.split(",")[1]) - float(y.split(",")[1])) for x, y in zip
 print(f"replay against the recording: largest force difference {worst:.2e} N")
 if worst > 1e-3: sys.exit("FAIL: the replay does not reproduce the recorded run")
 PY
-grep -q "texture-space$" "$dir/replay.csv" || { echo "FAIL: the recorded method was not replayed"; exit 1; }
+grep -q "parallax$" "$dir/replay.csv" || { echo "FAIL: the recorded method was not replayed"; exit 1; }
 
 run lit --frames 3
 run raymarch --frames 3 --method ray-march
