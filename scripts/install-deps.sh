@@ -11,6 +11,7 @@ packages=(
   libegl-dev libegl-mesa0 libgl-dev libgl1-mesa-dri   # EGL surfaceless context on Mesa llvmpipe
   libosmesa6-dev           # OSMesa fallback context
   libglfw3-dev             # windowed context (viewer)
+  libimgui-dev             # the viewer's control panel (Dear ImGui 1.86; libimgui.a holds its GLFW and OpenGL 3 back ends)
   libvtk9-dev vtk9 python3-vtk9   # inspection module; vtk9 and python3-vtk9 carry files VTK's CMake config names
   nlohmann-json3-dev       # JSON output and data files
   python3-glad             # generates the GL 3.3 core loader at build time (no download)

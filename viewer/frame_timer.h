@@ -15,17 +15,18 @@
 namespace tissue::viewer {
 
 /// The phases of one frame, in the order the loop runs them.
-enum class Phase { Input, Deform, Mesh, Upload, Render, Present };
-inline constexpr std::size_t kPhaseCount = 6;
-inline constexpr std::array<const char*, kPhaseCount> kPhaseNames{"input",  "deform", "mesh",
-                                                                  "upload", "render", "present"};
+/// Simulate, mesh, upload and render are scene::OrganLoop's phases (LoopPhases).
+enum class Phase { Input, Simulate, Mesh, Upload, Render, Panel, Present };
+inline constexpr std::size_t kPhaseCount = 7;
+inline constexpr std::array<const char*, kPhaseCount> kPhaseNames{"input",  "simulate", "mesh",   "upload",
+                                                                  "render", "panel",    "present"};
 
 /// Sums of phase times (ms) over some frames.
 struct PhaseTotals {
   std::array<double, kPhaseCount> ms{};
   long frames = 0;
 
-  /// "input 0.01 | deform 0.30 | ... ms" with the mean per frame of each phase.
+  /// "input 0.01 | simulate 0.30 | ... ms" with the mean per frame of each phase.
   std::string summary() const {
     std::string out;
     char buffer[48];
@@ -71,9 +72,15 @@ class FrameTimer {
   std::pair<PhaseTotals, double> takeWindow() {
     const double seconds = m_windowClock.elapsedMs() / 1000.0;
     const PhaseTotals totals = m_window;
+    m_last = m_window;
     m_window = {};
     m_windowClock.restart();
     return {totals, seconds > 0.0 ? double(totals.frames) / seconds : 0.0};
+  }
+
+  /// The mean ms of `phase` per frame over the last window taken (0 before the first).
+  double lastMeanMs(Phase phase) const {
+    return m_last.frames ? m_last.ms[std::size_t(phase)] / double(m_last.frames) : 0.0;
   }
 
   /// Totals over the whole run.
@@ -82,6 +89,7 @@ class FrameTimer {
  private:
   PhaseTotals m_window;
   PhaseTotals m_run;
+  PhaseTotals m_last;  ///< the last window taken
   Stopwatch m_windowClock;
 };
 

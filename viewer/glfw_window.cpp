@@ -3,6 +3,8 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
+
 namespace tissue::viewer {
 namespace {
 
@@ -88,6 +90,33 @@ gl::GetProcAddressFn Window::procAddress() const {
   return [](const char* name) { return glfwGetProcAddress(name); };
 }
 
+Result<Image8> Window::readBackBuffer() const {
+  // GL 1.0 entry points, looked up like the renderer's (GLFW_INCLUDE_NONE: no GL header here).
+  using PixelStorei = void (*)(unsigned, int);
+  using ReadBuffer = void (*)(unsigned);
+  using ReadPixels = void (*)(int, int, int, int, unsigned, unsigned, void*);
+  const auto pixelStorei = reinterpret_cast<PixelStorei>(glfwGetProcAddress("glPixelStorei"));
+  const auto readBuffer = reinterpret_cast<ReadBuffer>(glfwGetProcAddress("glReadBuffer"));
+  const auto readPixels = reinterpret_cast<ReadPixels>(glfwGetProcAddress("glReadPixels"));
+  if (!pixelStorei || !readBuffer || !readPixels)
+    return Error{"screenshot: no glReadPixels in this GL context"};
+  int width = 0, height = 0;
+  framebufferSize(width, height);
+  if (width <= 0 || height <= 0) return Error{"screenshot: the window is minimised"};
+  constexpr unsigned kPackAlignment = 0x0D05, kBack = 0x0405, kRgba = 0x1908, kUnsignedByte = 0x1401;
+  Image8 bottomUp(width, height, 4);
+  pixelStorei(kPackAlignment, 1);
+  readBuffer(kBack);
+  readPixels(0, 0, width, height, kRgba, kUnsignedByte, bottomUp.at(0, 0));
+  Image8 image(width, height, 4);
+  for (int y = 0; y < height; ++y) {
+    std::copy_n(bottomUp.at(0, height - 1 - y), std::size_t(width) * 4, image.at(0, y));
+    for (int x = 0; x < width; ++x)
+      image.at(x, y)[3] = 255;  // the panel's blending leaves alpha below 1; a screenshot is opaque
+  }
+  return image;
+}
+
 void Window::onMouseButton(GLFWwindow* window, int button, int action, int /*mods*/) {
   Window& self = windowOf(window);
   if (button == GLFW_MOUSE_BUTTON_LEFT) self.m_leftHeld = action == GLFW_PRESS;
@@ -96,14 +125,24 @@ void Window::onMouseButton(GLFWwindow* window, int button, int action, int /*mod
 }
 
 void Window::onScroll(GLFWwindow* window, double /*dx*/, double dy) {
-  windowOf(window).m_pending.scrollSteps += dy;
+  // With Shift or while the right button pokes, the wheel moves the tool: away from the user
+  // pushes deeper.
+  const bool depth = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
+                     glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
+                     glfwGetKey(window, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
+  (depth ? windowOf(window).m_pending.depthSteps : windowOf(window).m_pending.scrollSteps) += dy;
 }
 
 void Window::onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
-  if (action != GLFW_PRESS) return;
   InputFrame& pending = windowOf(window).m_pending;
+  // Depth keys repeat while held; the others act once per press.
+  if (action != GLFW_RELEASE && (key == GLFW_KEY_W || key == GLFW_KEY_PAGE_DOWN)) pending.depthSteps += 1.0;
+  if (action != GLFW_RELEASE && (key == GLFW_KEY_S || key == GLFW_KEY_PAGE_UP)) pending.depthSteps -= 1.0;
+  if (action != GLFW_PRESS) return;
   if (key == GLFW_KEY_ESCAPE) pending.quit = true;
-  if (key == GLFW_KEY_R) pending.reset = true;
+  if (key == GLFW_KEY_C) pending.resetView = true;
+  if (key == GLFW_KEY_R) pending.toggleRecord = true;
+  if (key == GLFW_KEY_G) pending.toggleGrasp = true;
   if (key == GLFW_KEY_N) pending.toggleNormalMap = true;
   if (key == GLFW_KEY_M) pending.cycleMethod = true;
 }

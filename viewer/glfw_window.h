@@ -1,11 +1,12 @@
 #pragma once
 /// \file
 /// The viewer's window: a GLFW window with a GL 3.3 core context, and the user's input
-/// gathered once per frame. GLFW's header stays inside glfw_window.cpp.
+/// gathered once per frame. GLFW's header stays inside glfw_window.cpp (and the panel's ImGui back end).
 
 #include <memory>
 #include <string>
 
+#include "tissue/core/image.h"
 #include "tissue/core/result.h"
 #include "tissue/gl/proc_address.h"
 
@@ -15,16 +16,20 @@ namespace tissue::viewer {
 
 /// What the user did since the last poll.
 struct InputFrame {
-  double cursorX = 0.0;          ///< pixels from the window's left edge (window coordinates)
-  double cursorY = 0.0;          ///< pixels from the window's top edge
-  double dragX = 0.0;            ///< pixels the cursor moved while the left button was held
-  double dragY = 0.0;            ///< pixels, down positive
-  double scrollSteps = 0.0;      ///< scroll wheel steps, positive away from the user
+  double cursorX = 0.0;      ///< pixels from the window's left edge (window coordinates)
+  double cursorY = 0.0;      ///< pixels from the window's top edge
+  double dragX = 0.0;        ///< pixels the cursor moved while the left button was held
+  double dragY = 0.0;        ///< pixels, down positive
+  double scrollSteps = 0.0;  ///< scroll wheel steps, positive away from the user (zoom)
+  double depthSteps =
+      0.0;  ///< tool depth steps, positive deeper: W, PageDown, scroll with Shift or the right button
   bool rightPressed = false;     ///< the right button went down
   bool rightReleased = false;    ///< the right button went up
   bool rightHeld = false;        ///< the right button is down now
   bool quit = false;             ///< Esc or the window's close button
-  bool reset = false;            ///< R
+  bool resetView = false;        ///< C: the home view
+  bool toggleRecord = false;     ///< R: start or stop (and save) the recording
+  bool toggleGrasp = false;      ///< G: grasp or release
   bool toggleNormalMap = false;  ///< N
   bool cycleMethod = false;      ///< M: the next shading method
 };
@@ -51,6 +56,11 @@ class Window {
   void windowSize(int& width, int& height) const;
   /// Looks up GL entry points of this window's context.
   gl::GetProcAddressFn procAddress() const;
+  /// The GLFW window (for the panel's ImGui back end).
+  GLFWwindow* handle() const { return m_window; }
+  /// The default framebuffer's back buffer as drawn so far this frame (before present()),
+  /// top row first, RGBA. A read-back stall: for screenshots only, never on the frame path.
+  Result<Image8> readBackBuffer() const;
 
  private:
   explicit Window(GLFWwindow* window);

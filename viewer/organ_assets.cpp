@@ -1,4 +1,4 @@
-// Loading the organ: mesh, the material's extinction, textures.
+// Loading the organ: scenario, mesh, the material's extinction and layers, textures.
 #include "organ_assets.h"
 
 #include <algorithm>
@@ -27,54 +27,67 @@ Result<float> readFirstLayerSigmaT(const std::filesystem::path& materialFile, fl
   }
 }
 
-/// Texture `name` of mesh `stem`: the generated version, else the committed one, else none.
+/// Texture `name` of mesh `stem`: the generated version, else the committed one, else empty.
+std::filesystem::path findTextureFile(const DataFolders& folders, const std::string& stem,
+                                      const std::string& name) {
+  for (const auto& dir : {folders.generated / "textures" / stem, folders.data / "textures" / stem})
+    if (const auto path = dir / (name + ".png"); std::filesystem::exists(path)) return path;
+  return {};
+}
+
 Result<std::optional<Image8>> findTexture(const DataFolders& folders, const std::string& stem,
                                           const std::string& name) {
-  for (const auto& dir : {folders.generated / "textures" / stem, folders.data / "textures" / stem}) {
-    const auto path = dir / (name + ".png");
-    if (!std::filesystem::exists(path)) continue;
-    auto image = readImage(path, 4);
-    if (!image) return image.error();
-    return std::optional<Image8>(std::move(*image));
-  }
-  return std::optional<Image8>();
+  const auto path = findTextureFile(folders, stem, name);
+  if (path.empty()) return std::optional<Image8>();
+  auto image = readImage(path, 4);
+  if (!image) return image.error();
+  return std::optional<Image8>(std::move(*image));
 }
 
 }  // namespace
 
-Result<OrganAssets> loadOrganAssets(const std::filesystem::path& meshFile, const DataFolders& folders) {
-  mesh::LoadOptions options;
-  options.requireUvs = true;
-  auto loaded = mesh::loadMesh(meshFile, options);
+Result<OrganAssets> loadOrganAssets(const std::filesystem::path& scenarioFile, const DataFolders& folders) {
+  if (!std::filesystem::exists(scenarioFile))
+    return Error{scenarioFile.string() +
+                 ": no such scenario file; give --scenario FILE (data/scenarios/*.json)"};
+  auto scenario = scenario::loadScenario(scenarioFile, {.sharedMeshesDir = folders.shared / "meshes"});
+  if (!scenario) return scenario.error();
+  if (!scenario->instrument)
+    return Error{scenarioFile.string() +
+                 ": the scenario has no instrument; the viewer pokes with it (key "
+                 "\"instrument\", docs/SCENARIOS.md)"};
+  const auto meshFile = scenario->mesh;
+  auto loaded = mesh::loadMesh(meshFile, {.requireUvs = true, .scaleToMm = float(scenario->meshScaleToMm)});
   if (!loaded) return loaded.error();
   const std::string stem = meshFile.stem().string();
-  auto sigmaT = readFirstLayerSigmaT(folders.data / "materials" / (stem + ".json"), 1.5f);
+  const auto materialFile = folders.data / "materials" / (stem + ".json");
+  auto sigmaT = readFirstLayerSigmaT(materialFile, 1.5f);
   if (!sigmaT) return sigmaT.error();
-  mesh::PlaneFitSettings planes;
-  planes.sigma_t = *sigmaT;
-  auto surface = mesh::DeformableSurface::create(std::move(*loaded), planes);
-  if (!surface) return Error{meshFile.string() + ": " + surface.error().message};
-  auto baseColor = findTexture(folders, stem, "base_color");
-  if (!baseColor) return baseColor.error();
-  auto normalMap = findTexture(folders, stem, "normal_map");
-  if (!normalMap) return normalMap.error();
-  auto innerBase = findTexture(folders, stem, "inner_base");
-  if (!innerBase) return innerBase.error();
-  auto opacity = findTexture(folders, stem, "opacity");
-  if (!opacity) return opacity.error();
-  std::optional<optics::ScatteringMaterial> material;
-  if (const auto file = folders.data / "materials" / (stem + ".json"); std::filesystem::exists(file)) {
-    auto m = optics::loadTissueMaterial(file);
-    if (!m) return Error{file.string() + ": " + m.error().message};
-    material = std::move(*m);
+  OrganAssets organ;
+  organ.scenario = std::move(*scenario);
+  organ.mesh = std::move(*loaded);
+  organ.planes.sigma_t = *sigmaT;
+  for (const auto& [name, slot] :
+       {std::pair{"base_color", &organ.baseColor}, std::pair{"normal_map", &organ.normalMap},
+        std::pair{"inner_base", &organ.innerBase}, std::pair{"opacity", &organ.opacity}}) {
+    auto texture = findTexture(folders, stem, name);
+    if (!texture) return texture.error();
+    *slot = std::move(*texture);
   }
-  return OrganAssets{std::move(*surface),
-                     std::move(*baseColor),
-                     std::move(*normalMap),
-                     std::move(*innerBase),
-                     std::move(*opacity),
-                     std::move(material),
-                     *sigmaT};
+  if (std::filesystem::exists(materialFile)) {
+    auto m = optics::loadTissueMaterial(materialFile);
+    if (!m) return Error{materialFile.string() + ": " + m.error().message};
+    organ.material = std::move(*m);
+    // Ray marching needs the whole stack and its subsurface map; without the map it is not offered.
+    if (const auto map = findTextureFile(folders, stem, "subsurface"); !map.empty()) {
+      const auto& s = organ.mesh;
+      auto rm =
+          materials::loadRayMarchMaterial(materialFile, folders.data, map, s.positions, s.uvs, s.triangles);
+      if (!rm) return rm.error();
+      organ.rayMarch = std::move(*rm);
+    }
+  }
+  return organ;
 }
 
 }  // namespace tissue::viewer

@@ -1,267 +1,257 @@
-// The viewer's set-up and frame loop.
+// The viewer's set-up and frame loop: input, then the library's loop (simulate, mesh, upload,
+// render into the window), then the panel and the buffer swap.
 #include "viewer_app.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
-#include <iostream>
+#include <fstream>
 #include <limits>
 #include <memory>
 #include <optional>
 
 #include "frame_timer.h"
 #include "glfw_window.h"
-#include "instrument_poke.h"
+#include "instrument_control.h"
 #include "orbit_camera.h"
 #include "organ_methods.h"
-#include "poke_script.h"
+#include "panel.h"
 #include "ray_pick.h"
 #include "tissue/render/renderer.h"
+#include "tissue/scene/organ_loop.h"
+#include "tissue/scene/session.h"
 #include "vec3_ops.h"
+#include "viewer_state.h"
 
 namespace tissue::viewer {
 namespace {
 
-/// The mean cost of DeformableSurface::update's own phases (ms), summed over the run.
-struct MeshBreakdown {
-  double gatherMs = 0.0, normalsMs = 0.0, planesMs = 0.0, tangentsMs = 0.0;
-  long updates = 0;
-  void add(const mesh::SurfaceUpdateStats& s) {
-    gatherMs += s.gatherMs;
-    normalsMs += s.normalsMs;
-    planesMs += s.planesMs;
-    tangentsMs += s.tangentsMs;
-    ++updates;
-  }
-};
-
-/// Everything the frames share. Members die in reverse order: the renderer before the window
-/// whose context it needs.
-struct Session {
-  explicit Session(OrganAssets assets) : organ(std::move(assets)) {}
-
-  OrganAssets organ;
-  std::unique_ptr<Window> window;
-  std::optional<render::Renderer> renderer;
-  std::optional<OrbitCamera> orbit;
-  std::optional<InstrumentPoke> poke;
-  render::Scene scene;  ///< one object: the organ
-  render::MeshHandle mesh;
-  render::TextureHandle normalMap;              ///< none: the organ has no normal map
-  std::vector<render::MethodSettings> methods;  ///< what M cycles through (organMethods)
-  std::size_t method = 0;                       ///< the organ's method now, an index into methods
-  bool normalMapping = true;
-  bool scriptHeld = false;
-  MeshBreakdown meshBreakdown;
-};
-
 /// The camera now, and a lamp above and to the right of the eye so the side in view is lit.
-void updateScene(Session& s) {
-  s.scene.camera = s.orbit->camera();
-  const Float3 forward = normalize(s.scene.camera.target - s.scene.camera.eye);
-  const Float3 right = normalize(cross(forward, s.scene.camera.up));
+void updateLight(Viewer& v) {
+  const render::Camera& c = v.scene.camera;
+  const Float3 forward = normalize(c.target - c.eye);
+  const Float3 right = normalize(cross(forward, c.up));
   const Float3 up = cross(right, forward);
-  const float d = s.orbit->distanceMm();
-  s.scene.lights[0].positionMm = s.scene.camera.eye + right * (0.5f * d) + up * (0.7f * d);
+  const float d = length(c.target - c.eye);
+  v.scene.lights[0].positionMm = c.eye + right * (0.5f * d) + up * (0.7f * d);
 }
 
-/// Uploads `image` when present; none otherwise.
-Result<render::TextureHandle> upload(render::Renderer& renderer, const std::optional<Image8>& image) {
-  if (!image) return render::TextureHandle{};
-  return renderer.createTexture(*image);
+/// The interactive input: keys, orbit and zoom, the right button as the instrument.
+void handleInteractive(Viewer& v, const InputFrame& in, scene::InstrumentInput& input) {
+  const bool mouse = !v.panel || !v.panel->wantsMouse();
+  if (in.resetView) v.orbit->reset();
+  if (mouse) {
+    v.orbit->orbit(in.dragX, in.dragY);
+    v.orbit->zoom(in.scrollSteps);
+  }
+  v.scene.camera = v.orbit->camera();
+  int width = 0, height = 0;
+  v.window->windowSize(width, height);
+  const Ray ray = rayFromCursor(v.scene.camera, in.cursorX, in.cursorY, width, height);
+  if (in.rightPressed && mouse) {
+    const auto& s = v.loop->surface();
+    if (const auto hit = nearestHit(ray, s.positions(), s.triangles())) v.tool->press(ray, hit->distanceMm);
+  }
+  if (in.rightHeld) v.tool->aim(ray);
+  if (in.rightReleased) v.tool->release(v.grasping);
+  v.tool->moveDepth(in.depthSteps);
+  if (in.toggleGrasp) v.grasping = !v.grasping, input.grasp = v.grasping;
+  const Float3 p = v.tool->step();
+  input.pose = sim::ToolPose{{p.x, p.y, p.z}};
 }
 
-/// Shows the organ with methods[method]; shadow maps when it scatters (the transmission of the
-/// separable and texture-space methods reads them).
-void applyMethod(Session& s) {
-  render::SceneObject& organ = s.scene.objects[0];
-  organ.method = s.methods[s.method];
-  organ.normalMap = s.normalMapping ? s.normalMap : render::TextureHandle{};
-  s.scene.lights[0].castsShadows = render::shadingMethod(organ.method) != render::ShadingMethod::Lit;
-}
-
-/// Creates the renderer on the window's context, uploads the organ and its textures, and
-/// builds the shading methods the organ can switch between (`initialMethod` first shown).
-Result<void> setUpRendering(Session& s, const std::string& initialMethod) {
-  render::RendererSettings settings;
-  settings.gpuTimers = false;  // timer queries would stall every frame waiting for the GPU
-  auto renderer = render::Renderer::create(s.window->procAddress(), settings);
-  if (!renderer) return renderer.error();
-  s.renderer.emplace(std::move(*renderer));
-  const auto& surface = s.organ.surface;
-  auto mesh = s.renderer->createMesh(
-      {surface.positions(), surface.normals(), surface.tangents(), surface.uvs(), surface.triangles(), {}});
-  if (!mesh) return mesh.error();
-  s.mesh = *mesh;
-  auto base = upload(*s.renderer, s.organ.baseColor);
-  auto normal = upload(*s.renderer, s.organ.normalMap);
-  auto inner = upload(*s.renderer, s.organ.innerBase);
-  auto opacity = upload(*s.renderer, s.organ.opacity);
-  for (const auto* r : {&base, &normal, &inner, &opacity})
-    if (!*r) return r->error();
-  s.normalMap = *normal;
-  auto methods = organMethods(s.organ, {*inner, *opacity});
-  if (!methods) return methods.error();
-  s.methods = std::move(*methods);
-  auto index = findMethod(s.methods, initialMethod);
-  if (!index) return index.error();
-  s.method = *index;
-  render::SceneObject organ;
-  organ.mesh = s.mesh;
-  organ.baseColor = *base;
-  s.scene.objects = {organ};
-  applyMethod(s);
+/// The replayed input of frame `i`: pose and grasp, and the recorded camera and method.
+Result<void> handleReplay(Viewer& v, std::size_t i, scene::InstrumentInput& input) {
+  input = scene::sessionInput(*v.replay, i);
+  const scene::SessionFrame& f = v.replay->frames[i];
+  if (f.camera) v.scene.camera = *f.camera;
+  if (f.method) {
+    auto index = findMethod(v.methods, *f.method);
+    if (!index)
+      return Error{v.replay->file.string() + ": frames[" + std::to_string(i) +
+                   "].method: " + index.error().message};
+    v.method = *index;
+  }
   return {};
 }
 
-/// Right button down at (`x`, `y`) window pixels: the instrument touches the nearest surface
-/// under the cursor and pushes along the view ray. Returns the hit, empty on a miss.
-std::optional<RayHit> pokeAt(Session& s, double x, double y) {
-  int width = 0, height = 0;
-  s.window->windowSize(width, height);
-  const Ray ray = rayFromCursor(s.scene.camera, x, y, width, height);
-  const auto& surface = s.organ.surface;
-  const auto hit = nearestHit(ray, surface.positions(), surface.triangles());
-  if (hit) s.poke->press(hit->pointMm, ray.direction, surface.geometricPositions());
-  return hit;
-}
-
-/// The input phase: events, the scripted poke, keys, orbit and zoom, picking.
-/// Returns false when the user quits.
-bool handleInput(Session& s, const PokeScript* script, double timeS) {
-  InputFrame in = s.window->poll();
-  if (script && script->holds(timeS) != s.scriptHeld) {
-    s.scriptHeld = !s.scriptHeld;
-    (s.scriptHeld ? in.rightPressed : in.rightReleased) = true;
-    int width = 0, height = 0;
-    s.window->windowSize(width, height);
-    const Float3 top =
-        s.organ.surface.geometricPositions()[topVertex(s.organ.surface.geometricRestPositions())];
-    const auto cursor = projectToCursor(s.scene.camera, top, width, height);
-    in.cursorX = cursor ? double(cursor->x) : width / 2.0;
-    in.cursorY = cursor ? double(cursor->y) : height / 2.0;
-  }
-  if (in.quit) return false;
-  if (in.reset) {
-    s.poke->reset();
-    s.orbit->reset();
-  }
-  if (in.toggleNormalMap) s.normalMapping = !s.normalMapping;
-  if (in.cycleMethod) {
-    s.method = (s.method + 1) % s.methods.size();
-    std::printf("tissue-viewer: shading method %s\n",
-                std::string(render::shadingMethodName(render::shadingMethod(s.methods[s.method]))).c_str());
-  }
-  applyMethod(s);
-  s.orbit->orbit(in.dragX, in.dragY);
-  s.orbit->zoom(in.scrollSteps);
-  updateScene(s);
-  if (in.rightPressed) {
-    const auto hit = pokeAt(s, in.cursorX, in.cursorY);
-    if (hit && script)
-      std::printf("tissue-viewer: scripted poke hits triangle %u at (%.1f, %.1f, %.1f) mm\n", hit->triangle,
-                  double(hit->pointMm.x), double(hit->pointMm.y), double(hit->pointMm.z));
-  }
-  if (in.rightReleased) s.poke->release();
-  return true;
-}
-
-/// One line with the frame rate and the mean cost of each phase, on stdout and in the title.
-void report(Session& s, FrameTimer& timer) {
+/// One line with the frame rate, the mean cost of each phase and the force, on stdout and in the title.
+void report(Viewer& v, FrameTimer& timer) {
   const auto [totals, fps] = timer.takeWindow();
+  v.fps = fps;
+  char tail[96];
+  std::snprintf(tail, sizeof tail, " | force %.3f N | grasped %u", v.last.simulation.forceMagnitudeN,
+                v.last.simulation.grasped);
   char head[32];
   std::snprintf(head, sizeof head, "%.1f fps | ", fps);
-  const std::string method(render::shadingMethodName(render::shadingMethod(s.methods[s.method])));
-  const std::string line = method + " | " + std::string(head) + totals.summary();
-  s.window->setTitle("tissue-viewer - " + line);
+  const std::string line = methodName(v.methods[v.method]) + " | " + head + totals.summary() + tail;
+  v.window->setTitle("tissue-viewer - " + line);
   std::printf("tissue-viewer: %s\n", line.c_str());
   std::fflush(stdout);
 }
 
-/// The frame loop, top to bottom: input, deform, mesh, upload, render, present.
-Result<void> runFrames(Session& s, const ViewerOptions& options, FrameTimer& timer) {
-  const PokeScript script;
-  Stopwatch frameClock;
-  double timeS = 0.0;  // simulated time, s
-  for (long frame = 0; options.frames == 0 || frame < options.frames; ++frame) {
-    // A scripted run of N frames steps time evenly (the same pictures every time); otherwise
-    // time is the wall clock's, a frame counting at most 0.1 s (a stall must not jump the poke).
-    const bool evenSteps = options.pokeScript && options.frames > 0;
-    const double dtS = evenSteps ? script.stepS : std::min(frameClock.elapsedMs() / 1000.0, 0.1);
-    frameClock.restart();
-    timeS += dtS;
-    if (!timer.time(Phase::Input,
-                    [&] { return handleInput(s, options.pokeScript ? &script : nullptr, timeS); }))
-      break;
-    const bool moved = timer.time(Phase::Deform, [&] { return s.poke->step(float(dtS)); });
-    auto& surface = s.organ.surface;
-    if (moved) timer.time(Phase::Mesh, [&] { s.meshBreakdown.add(surface.update(s.poke->positions())); });
-    const auto uploaded = timer.time(Phase::Upload, [&]() -> Result<void> {
-      if (!moved) return {};
-      return s.renderer->updateMesh(s.mesh,
-                                    {0, surface.positions(), surface.normals(), surface.tangents(), {}});
-    });
-    if (!uploaded) return uploaded;
-    int width = 0, height = 0;
-    s.window->framebufferSize(width, height);
-    const auto drawn = timer.time(Phase::Render, [&]() -> Result<void> {
-      if (width <= 0 || height <= 0) return {};  // minimised: nothing to draw into
-      return s.renderer->renderTo(s.scene, render::HostFramebuffer{0, 0, 0, width, height});
-    });
-    if (!drawn) return drawn;
-    timer.time(Phase::Present, [&] { s.window->present(); });
-    if (timer.endFrame()) report(s, timer);
+/// The force bar's full length (N): the first of 0.01, 0.02, 0.05, 0.1, ... N at or above the
+/// largest force so far (a surface-spring liver pushes back with millinewtons, a stiff lattice
+/// with newtons).
+double forceBarScaleN(double maxForceN) {
+  for (double decade = 0.01; decade < 100.0; decade *= 10.0)
+    for (double m : {1.0, 2.0, 5.0})
+      if (m * decade >= maxForceN) return m * decade;
+  return 100.0;
+}
+
+/// The panel's view of the viewer now.
+PanelView panelView(const Viewer& v, const FrameTimer& timer) {
+  PanelView p;
+  p.fps = v.fps;
+  p.ms = {timer.lastMeanMs(Phase::Simulate), timer.lastMeanMs(Phase::Mesh), timer.lastMeanMs(Phase::Upload),
+          timer.lastMeanMs(Phase::Render), 0.0};
+  p.panelMs = timer.lastMeanMs(Phase::Panel);
+  p.presentMs = timer.lastMeanMs(Phase::Present);
+  p.forceN = v.last.simulation.forceMagnitudeN;
+  p.forceScaleN = forceBarScaleN(v.maxForceN);
+  p.contacts = v.last.simulation.contacts;
+  p.grasped = v.last.simulation.grasped;
+  p.toolDepthMm = v.tool ? v.tool->depthMm() : 0.0f;
+  for (const auto& m : v.methods)
+    p.methods.push_back(methodName(m));
+  p.method = v.method;
+  p.choices = v.choices;
+  p.methodError = v.methodError;
+  p.tissue = tissueLines(v.organ.scenario);
+  p.mode = v.replay ? "replay" : v.scripted ? "scripted" : "interactive";
+  p.frame = v.loop->frame();
+  p.recording = v.recorder.has_value();
+  p.recordedFrames = v.recorder ? long(v.recorder->session().frames.size()) : 0;
+  return p;
+}
+
+/// What the panel asked for: method, settings, grasp, recording, reset.
+Result<void> applyPanel(Viewer& v, const PanelActions& a, scene::InstrumentInput& input) {
+  if (a.method) v.method = *a.method;
+  if (a.choices) {
+    if (auto ok = rebuildMethods(v, *a.choices); !ok)
+      v.methodError = ok.error().message;
+    else
+      v.methodError.clear();
   }
+  if (a.toggleGrasp && !v.replay && !v.scripted) v.grasping = !v.grasping, input.grasp = v.grasping;
+  if (a.toggleRecord)
+    if (auto ok = toggleRecording(v); !ok) return ok;
+  if (a.reset) return resetLoop(v);
   return {};
 }
 
-/// The last frame again, offscreen at the framebuffer's size, written atomically.
-Result<void> writeScreenshot(Session& s, const std::filesystem::path& png) {
-  int width = 0, height = 0;
-  s.window->framebufferSize(width, height);
-  auto image = s.renderer->renderImage(s.scene, width, height);
-  if (!image) return image.error();
-  return writePng(png, *image);
+/// The frame loop, top to bottom: input (and the panel's layout), the library's loop (simulate,
+/// mesh, upload, render into the window), the panel, the screenshot, present, record, log.
+Result<void> runFrames(Viewer& v, const ViewerOptions& options, FrameTimer& timer) {
+  long frames = options.frames;
+  if (v.replay)
+    frames =
+        frames > 0 ? std::min<long>(frames, long(v.replay->frames.size())) : long(v.replay->frames.size());
+  for (long frame = 0; frames == 0 || frame < frames; ++frame) {
+    scene::InstrumentInput input;
+    PanelActions actions;
+    const InputFrame in = timer.time(Phase::Input, [&] { return v.window->poll(); });
+    if (in.quit) break;
+    if (v.panel) actions = timer.time(Phase::Panel, [&] { return v.panel->build(panelView(v, timer)); });
+    auto handled = timer.time(Phase::Input, [&]() -> Result<void> {
+      const bool keys = !v.panel || !v.panel->wantsKeyboard();
+      if (keys && in.toggleNormalMap) v.normalMapping = !v.normalMapping;
+      if (keys && in.cycleMethod) v.method = (v.method + 1) % v.methods.size();
+      if (keys && in.toggleRecord)
+        if (auto ok = toggleRecording(v); !ok) return ok;
+      if (v.replay) {
+        if (auto ok = handleReplay(v, std::size_t(frame), input); !ok) return ok;
+      } else if (!v.scripted) {
+        InputFrame gated = in;
+        if (!keys) gated.toggleGrasp = false, gated.depthSteps = 0.0, gated.resetView = false;
+        handleInteractive(v, gated, input);
+      }
+      if (auto ok = applyPanel(v, actions, input); !ok) return ok;
+      applyMethod(v);
+      updateLight(v);
+      return {};
+    });
+    if (!handled) return handled;
+    int width = 0, height = 0;
+    v.window->framebufferSize(width, height);
+    scene::RenderRequest request;
+    request.scene = &v.scene;
+    request.host = render::HostFramebuffer{0, 0, 0, width, height};
+    auto f = v.loop->advance(input, width > 0 && height > 0 ? &request : nullptr);  // minimised: no render
+    if (!f) return Error{"frame " + std::to_string(frame) + ": " + f.error().message};
+    v.last = *f;
+    timer.add(Phase::Simulate, f->ms.simulateMs);
+    timer.add(Phase::Mesh, f->ms.meshMs);
+    timer.add(Phase::Upload, f->ms.uploadMs);
+    timer.add(Phase::Render, f->ms.renderMs);
+    if (v.panel) timer.time(Phase::Panel, [&] { v.panel->draw(); });
+    if (frame + 1 == frames && !options.screenshot.empty()) {
+      auto image = v.window->readBackBuffer();
+      if (!image) return image.error();
+      if (auto w = writePng(options.screenshot, *image); !w) return w;
+      std::printf("tissue-viewer: wrote %s\n", options.screenshot.string().c_str());
+    }
+    timer.time(Phase::Present, [&] { v.window->present(); });
+    if (v.recorder) {
+      const std::string method = methodName(v.methods[v.method]);
+      v.recorder->recordFrame(*v.loop, &v.scene.camera, &method);
+    }
+    logFrame(v, timer, *f);
+    if (timer.endFrame() || frame + 1 == frames) report(v, timer);
+  }
+  return {};
 }
 
 }  // namespace
 
 Result<void> runViewer(const ViewerOptions& options) {
-  auto organ = loadOrganAssets(options.mesh, options.folders);
+  std::optional<scene::Session> session;
+  std::filesystem::path scenarioFile = options.scenario;
+  if (!options.replay.empty()) {
+    auto loaded = scene::loadSession(options.replay);
+    if (!loaded) return loaded.error();
+    session = std::move(*loaded);
+    scenarioFile = session->scenario;  // the session's own scenario
+  }
+  auto organ = loadOrganAssets(scenarioFile, options.folders);
   if (!organ) return organ.error();
-  Session s(std::move(*organ));
+  Viewer v(std::move(*organ));
+  v.scripted = options.pokeScript;
+  if (auto ok = createLoop(v); !ok) return ok;
+  if (session) {
+    if (auto match = scene::checkSessionMatches(*session, *v.loop); !match) return match;
+    v.replay = std::move(session);
+  }
+  if (!options.log.empty()) {
+    v.log.open(options.log);
+    if (!v.log) return Error{options.log.string() + ": cannot write the per-frame log; check the folder"};
+    v.log << "frame,simulate_ms,mesh_ms,upload_ms,render_ms,total_loop_ms,force_N,contacts,grasped,method\n";
+  }
   auto window =
-      Window::open(options.width, options.height, "tissue-viewer - " + options.mesh.filename().string());
+      Window::open(options.width, options.height, "tissue-viewer - " + scenarioFile.filename().string());
   if (!window)
     return Error{"cannot open a window: " + window.error().message + "; run under a display or xvfb-run"};
-  s.window = std::move(*window);
-  if (auto ok = setUpRendering(s, options.method); !ok) return ok;
-
-  // The home view frames the rest shape; the poke starts at rest.
-  const auto rest = s.organ.surface.geometricRestPositions();
-  Float3 lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
-            std::numeric_limits<float>::max()};
-  Float3 hi{-lo.x, -lo.y, -lo.z};
-  for (const Float3& p : rest) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  s.orbit.emplace(lo, hi, float(options.width) / float(options.height));
-  s.poke.emplace(rest);
-  updateScene(s);
+  v.window = std::move(*window);
+  if (auto ok = setUpRendering(v, options.method); !ok) return ok;
+  auto panel = Panel::create(v.window->handle());
+  if (!panel) return panel.error();
+  v.panel = std::move(*panel);
+  v.orbit.emplace(v.boxLo, v.boxHi, float(options.width) / float(options.height));
+  v.scene.camera = v.orbit->camera();
+  v.recordFile =
+      options.record.empty() ? std::filesystem::path("tissue-viewer-session.json") : options.record;
+  if (!options.record.empty())
+    if (auto ok = toggleRecording(v); !ok) return ok;
 
   FrameTimer timer;
-  if (auto ok = runFrames(s, options, timer); !ok) return ok;
-  const MeshBreakdown& m = s.meshBreakdown;
-  const double n = double(std::max(m.updates, 1L));
-  std::printf("tissue-viewer: %ld frames, mean per frame: %s\n", timer.run().frames,
-              timer.run().summary().c_str());
-  std::printf(
-      "tissue-viewer: mesh update (%ld): gather %.2f | normals %.2f | planes %.2f | tangents %.2f ms\n",
-      m.updates, m.gatherMs / n, m.normalsMs / n, m.planesMs / n, m.tangentsMs / n);
-  if (!options.screenshot.empty()) {
-    if (auto ok = writeScreenshot(s, options.screenshot); !ok) return ok;
-    std::printf("tissue-viewer: wrote %s\n", options.screenshot.string().c_str());
-  }
+  auto ran = runFrames(v, options, timer);
+  if (v.recorder)  // saved at exit too
+    if (auto ok = toggleRecording(v); !ok && ran) ran = ok;
+  if (!ran) return ran;
+  std::printf("tissue-viewer: %ld frames, mean per frame: %s; largest force %.3f N\n", timer.run().frames,
+              timer.run().summary().c_str(), v.maxForceN);
   return {};
 }
 

@@ -10,7 +10,6 @@
 #include "tissue/context/headless_context.h"
 #include "tissue/mesh/load_mesh.h"
 #include "tissue/mesh/vertex_normals.h"
-#include "tissue/optics/schlick_phase.h"
 
 namespace tissue::sim_app {
 namespace {
@@ -42,18 +41,13 @@ Result<RayMarchScene> loadRayMarchScene(const std::filesystem::path& meshFile, f
 Result<RayMarchScene> rayMarchSceneFor(const mesh::DeformableSurface& s, const std::string& stem,
                                        float aspect, bool closeUp) {
   RayMarchScene scene;
-  auto stack = subsurface::loadLayerStack(dataDir() / "materials" / (stem + ".json"), dataDir());
-  if (!stack) return Error{stack.error().message + " (ray marching needs a data/ mesh with a material file)"};
-  scene.stack = std::move(*stack);
   // The build-time 1024 map when there is one, else the committed 128 one.
-  auto map = readImage(findDataTexture(stem, "subsurface"), 4);
-  if (!map) return Error{"subsurface map of " + stem + ": " + map.error().message};
-  scene.subsurfaceMap = std::move(*map);
-  auto maps = subsurface::subsurfaceMapsFromImages(std::span<const Image8>(&scene.subsurfaceMap, 1));
-  if (!maps) return maps.error();
-  scene.stack.maps = std::move(*maps);
+  auto material = materials::loadRayMarchMaterial(dataDir() / "materials" / (stem + ".json"), dataDir(),
+                                                  findDataTexture(stem, "subsurface"), s.positions(), s.uvs(),
+                                                  s.triangles());
+  if (!material) return material.error();
+  scene.material = std::move(*material);
   scene.surface = &s;
-  scene.uvPerMm = subsurface::uvPerMmOf(s.positions(), s.uvs(), s.triangles());
   scene.pokeSite = topVertex(s.geometricRestPositions());
   // Camera: the whole organ, or a close-up of the poke site seen from above and in front.
   Float3 lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
@@ -100,13 +94,7 @@ std::vector<render::Light> pipelineLights(const RayMarchScene& scene) {
 
 render::RayMarchSettings withMaterial(render::RayMarchSettings march, const RayMarchScene& scene,
                                       render::TextureHandle map) {
-  march.layers.clear();
-  for (const auto& l : scene.stack.layers)
-    march.layers.push_back({l.sigma_s, l.sigma_t, float(optics::schlickKFromG(l.g))});
-  march.subsurfaceMaps = {map};
-  march.depthScaleMm = scene.stack.depthScaleMm;
-  march.uvPerMm = scene.uvPerMm;
-  return march;
+  return materials::withRayMarchMaterial(std::move(march), scene.material, map);
 }
 
 void RayMarchRender::setMarch(const render::RayMarchSettings& march) {
@@ -140,7 +128,7 @@ Result<RayMarchRender> makeRayMarchRender(const RayMarchScene& scene,
   auto mesh =
       renderer->createMesh({s.positions(), s.normals(), s.tangents(), s.uvs(), s.triangles(), s.planes()});
   if (!mesh) return mesh.error();
-  auto map = renderer->createTexture(scene.subsurfaceMap, render::TextureEncoding::LinearData);
+  auto map = renderer->createTexture(scene.material.subsurfaceMap, render::TextureEncoding::LinearData);
   if (!map) return map.error();
   RayMarchRender out{std::move(*renderer), *mesh, *map, {}};
   out.scene.camera = scene.camera;
@@ -158,7 +146,8 @@ Result<RayMarchRender> makeRayMarchRender(const RayMarchScene& scene,
 
 subsurface::MeshView meshView(const RayMarchScene& scene) {
   const auto& s = *scene.surface;
-  return {s.positions(), s.normals(), s.tangents(), s.planes(), s.uvs(), s.triangles(), scene.uvPerMm};
+  return {s.positions(), s.normals(),   s.tangents(),          s.planes(),
+          s.uvs(),       s.triangles(), scene.material.uvPerMm};
 }
 
 subsurface::PinholeCamera pinholeOf(const render::Camera& camera) {

@@ -13,6 +13,7 @@
 #include "command.h"
 #include "tissue/core/image.h"
 #include "tissue/core/result.h"
+#include "tissue/materials/raymarch_material.h"
 #include "tissue/mesh/deformable_surface.h"
 #include "tissue/render/renderer.h"
 #include "tissue/render/scene.h"
@@ -30,9 +31,7 @@ inline constexpr Float3 kRayMarchBackground{0.05f, 0.05f, 0.06f};
 struct RayMarchScene {
   std::unique_ptr<mesh::DeformableSurface> owned;    ///< the surface when the scene loaded it
   const mesh::DeformableSurface* surface = nullptr;  ///< positions, normals, tangents, planes
-  subsurface::LayerStack stack;                      ///< data/materials/<stem>.json
-  Image8 subsurfaceMap;                              ///< the RGBA map the stack was built from
-  float uvPerMm = 0.0f;                              ///< texture units per mm of this mesh
+  materials::RayMarchMaterial material;              ///< data/materials/<stem>.json, its map, uv per mm
   render::Camera camera;                             ///< frames the organ (or the poke site)
   std::vector<subsurface::Light> lights;             ///< a key light and a back light
   std::uint32_t pokeSite = 0;                        ///< geometric vertex the poke pushes
@@ -55,7 +54,8 @@ void pokeScene(RayMarchScene& scene, double fraction, float depthMm);
 std::vector<render::Light> pipelineLights(const RayMarchScene& scene);
 
 /// `march` (the march and adaptive-quality fields) with the scene's material: its layers (Schlick
-/// k from g), the uploaded subsurface map `map`, depth scale and uvPerMm.
+/// k from g), the uploaded subsurface map `map`, depth scale and uvPerMm
+/// (materials::withRayMarchMaterial).
 render::RayMarchSettings withMaterial(render::RayMarchSettings march, const RayMarchScene& scene,
                                       render::TextureHandle map);
 

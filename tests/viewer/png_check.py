@@ -4,6 +4,11 @@
 png_check.py organ A.png      the picture is not one colour and the organ covers 5-95 % of it
 png_check.py differ A.png B.png [LEVELS COUNT]
                                   at least COUNT (100) pixels differ by more than LEVELS (24) in a channel
+png_check.py steel A.png MINX COUNT
+                                  at least COUNT steel-grey pixels (the instrument: channels within 14
+                                  levels, mean 70..235) right of column MINX (left of it: the panel's text)
+png_check.py panel A.png COUNT    at least COUNT pixels of ImGui's dark style: the focused title bar
+                                  (41, 74, 122) and the frame background (29, 47, 73), within 4 levels
 png_check.py softer A.png B.png   inside the organ (both pictures off the background), A's detail
                                   (mean |4-neighbour Laplacian| of the green channel) is below 0.8
                                   of B's: subsurface scattering blurs the normal-mapped surface
@@ -75,6 +80,21 @@ def main():
         print(f"{changed} pixels differ by more than {levels} levels")
         if changed < count:
             sys.exit(f"FAIL: fewer than {count} pixels changed")
+    elif sys.argv[1] == "steel":
+        w, h, px = pixels(sys.argv[2])
+        min_x, count = int(sys.argv[3]), int(sys.argv[4])
+        steel = sum(1 for i, p in enumerate(px)
+                    if i % w >= min_x and max(p) - min(p) <= 14 and 70 <= sum(p) / 3 <= 235)
+        print(f"{sys.argv[2]}: {steel} steel-grey pixels right of x = {min_x}")
+        if steel < count:
+            sys.exit(f"FAIL: fewer than {count} steel-grey pixels: no instrument in the picture")
+    elif sys.argv[1] == "panel":
+        w, h, px = pixels(sys.argv[2])
+        styled = sum(1 for p in px if any(all(abs(a - b) <= 4 for a, b in zip(p, c))
+                                          for c in ((41, 74, 122), (29, 47, 73))))
+        print(f"{sys.argv[2]}: {styled} pixels in ImGui's panel colours")
+        if styled < int(sys.argv[3]):
+            sys.exit("FAIL: no ImGui panel in the picture")
     elif sys.argv[1] == "softer":
         detail = []
         wa, ha, a = pixels(sys.argv[2])

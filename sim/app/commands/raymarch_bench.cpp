@@ -143,14 +143,14 @@ int run(BenchOptions o, const GlobalOptions& global) {
   ref.march.samples = o.referenceSamples;
   ref.march.attenuationThreshold = 0.0f;
   Stopwatch refClock;
-  const auto reference = subsurface::renderSingleScatteringCpu(meshView(scene), scene.stack, scene.lights,
-                                                               pinholeOf(scene.camera), ref);
+  const auto reference = subsurface::renderSingleScatteringCpu(meshView(scene), scene.material.stack,
+                                                               scene.lights, pinholeOf(scene.camera), ref);
   const double referenceMs = refClock.elapsedMs();
   const Image8 referenceImage = subsurface::toDisplay(reference, kRayMarchRadianceScale, kRayMarchBackground);
   // Step 2: the same with the fitted planes: what the plane approximation costs in accuracy.
   ref.entry = subsurface::EntryMode::Planes;
-  const auto planesOnly = subsurface::renderSingleScatteringCpu(meshView(scene), scene.stack, scene.lights,
-                                                                pinholeOf(scene.camera), ref);
+  const auto planesOnly = subsurface::renderSingleScatteringCpu(meshView(scene), scene.material.stack,
+                                                                scene.lights, pinholeOf(scene.camera), ref);
   const Image8 planesImage = subsurface::toDisplay(planesOnly, kRayMarchRadianceScale, kRayMarchBackground);
   // Step 3: the pipeline's ray-march method at each setting.
   auto context = createAppContext({}, false);
@@ -206,8 +206,8 @@ int run(BenchOptions o, const GlobalOptions& global) {
   twin.jitter = true;
   twin.march = {};
   twin.march.samples = 50;
-  const auto cpu50 = subsurface::renderSingleScatteringCpu(meshView(scene), scene.stack, scene.lights,
-                                                           pinholeOf(scene.camera), twin);
+  const auto cpu50 = subsurface::renderSingleScatteringCpu(meshView(scene), scene.material.stack,
+                                                           scene.lights, pinholeOf(scene.camera), twin);
   render::RayMarchSettings s50;
   s50.radianceScale = kRayMarchRadianceScale;
   gpu->setMarch(s50);

@@ -62,7 +62,7 @@ Result<nlohmann::json> study(const Case& c, const StudyOptions& o) {
     s.jitter = jitter;
     s.march.samples = samples;
     s.march.attenuationThreshold = 0.0f;
-    return subsurface::renderSingleScatteringCpu(meshView(scene), scene.stack, scene.lights,
+    return subsurface::renderSingleScatteringCpu(meshView(scene), scene.material.stack, scene.lights,
                                                  pinholeOf(scene.camera), s);
   };
   const auto ref = image(subsurface::EntryMode::Mesh, o.referenceSamples, false);
