@@ -83,6 +83,9 @@ class OrganLoop {
   /// they differ, and on any error of the scenario, the mesh or the planes.
   static Result<OrganLoop> create(const scenario::Scenario& scenario, SurfaceMesh surface,
                                   const OrganLoopConfig& config = {});
+  /// Does not detach: destroying GL objects needs the renderer's context current, which a
+  /// destructor cannot know. Call detach() first with the context current, or destroy the
+  /// renderer (which frees everything it holds).
   ~OrganLoop();
   OrganLoop(OrganLoop&&) noexcept;
   OrganLoop& operator=(OrganLoop&&) noexcept;
