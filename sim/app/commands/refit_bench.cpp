@@ -10,6 +10,7 @@
 #include "deformations.h"
 #include "material_file.h"
 #include "output.h"
+#include "tissue/core/statistics.h"
 #include "tissue/core/stopwatch.h"
 #include "tissue/mesh/deformable_surface.h"
 #include "tissue/mesh/load_mesh.h"
@@ -33,14 +34,8 @@ struct BenchOptions {
   int repeats = 0;  // 0: choose from the mesh size
 };
 
-double percentile(std::vector<double> v, double q) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  return v[std::min(v.size() - 1, std::size_t(q * double(v.size())))];
-}
-
-double median(std::vector<double> v) {
-  return percentile(std::move(v), 0.5);
+double median(const std::vector<double>& v) {
+  return quantile(v, 0.5);
 }
 
 /// Times full and incremental re-fits between the rest state and `deformed`, alternating so
@@ -107,9 +102,9 @@ struct SeriesStats {
   nlohmann::json json(double refitRad) const {
     return {{"max_normal_error_rad", refitRad},
             {"mean_refitted_fraction", refitted / double(std::max<std::size_t>(planesMs.size(), 1))},
-            {"planes_ms_median", percentile(planesMs, 0.5)},
-            {"planes_ms_p99", percentile(planesMs, 0.99)},
-            {"planes_ms_max", percentile(planesMs, 1.0)},
+            {"planes_ms_median", quantile(planesMs, 0.5)},
+            {"planes_ms_p99", quantile(planesMs, 0.99)},
+            {"planes_ms_max", quantile(planesMs, 1.0)},
             {"max_normal_deviation_rad", maxAngle},
             {"max_offset_deviation_mm", maxOffset}};
   }
@@ -196,7 +191,7 @@ int runScenario(const BenchOptions& o, const GlobalOptions& global) {
     for (float t : tolerant->planeFitter().toleranceMmPerRad())
       tol.push_back(theta * double(t));
     out["plane_tolerance_mm"] = {
-        {"p10", percentile(tol, 0.1)}, {"median", percentile(tol, 0.5)}, {"p90", percentile(tol, 0.9)}};
+        {"p10", quantile(tol, 0.1)}, {"median", quantile(tol, 0.5)}, {"p90", quantile(tol, 0.9)}};
   }
   out["normals_ms_median"] = median(normalsMs);
   out["tangents_ms_median"] = median(tangentsMs);

@@ -5,18 +5,11 @@
 #include <cmath>
 
 #include "sim_bench.h"
+#include "tissue/core/statistics.h"
 #include "tissue/scenario/scenario_run.h"
 
 namespace tissue::sim_app {
 namespace {
-
-/// The q-quantile (0..1) of `values` by nearest rank; 0 when empty.
-double quantile(std::vector<double> values, double q) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(values.size())));
-  return values[std::clamp<std::size_t>(rank, 1, values.size()) - 1];
-}
 
 nlohmann::json distribution(const std::vector<double>& values) {
   return {{"median", quantile(values, 0.5)}, {"p99", quantile(values, 0.99)}, {"max", quantile(values, 1.0)}};

@@ -10,6 +10,7 @@
 #include "material_file.h"
 #include "output.h"
 #include "tissue/core/atomic_file.h"
+#include "tissue/core/statistics.h"
 #include "tissue/core/stopwatch.h"
 #include "tissue/mesh/deformable_surface.h"
 #include "tissue/mesh/load_mesh.h"
@@ -42,14 +43,6 @@ Result<std::string> renderLastFrame(const scenario::ScenarioRun& run, const std:
   DemoRenderer renderer(960, 720);
   if (auto ok = renderer.render(*surface, *material, png); !ok) return ok.error();
   return png.filename().string();
-}
-
-/// The q-quantile (0..1) of `values` (nearest rank); 0 when empty.
-double quantile(std::vector<double> values, double q) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(values.size())));
-  return values[std::clamp<std::size_t>(rank, 1, values.size()) - 1];
 }
 
 nlohmann::json summaryJson(const scenario::ScenarioRun& run, const scenario::RunSummary& s,

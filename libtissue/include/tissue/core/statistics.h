@@ -26,6 +26,14 @@ inline double quantileSorted(std::span<const double> sorted, double q) {
   return sorted[std::min(index, sorted.size() - 1)];
 }
 
+/// The value at quantile q in [0, 1] of `values` (any order; copied) by the nearest-rank
+/// method; 0 when empty.
+inline double quantile(std::span<const double> values, double q) {
+  std::vector<double> sorted(values.begin(), values.end());
+  std::sort(sorted.begin(), sorted.end());
+  return quantileSorted(sorted, q);
+}
+
 /// Summarises `samples` (any order; copied).
 inline SampleSummary summarizeSamples(std::span<const double> samples) {
   SampleSummary s;
