@@ -100,6 +100,13 @@ void Instrument::setTarget(const ToolPose& pose) {
     m_liveTarget = {pose.position, normalizedOr(pose.axis, m_pose.axis)};
 }
 
+Result<void> Instrument::setRadius(double radiusMm) {
+  if (!(radiusMm > 0.0) || !std::isfinite(radiusMm))
+    return Error{"instrument radius " + std::to_string(radiusMm) + " mm: give a positive number of mm"};
+  m_config.shape.radius = radiusMm;
+  return {};
+}
+
 Result<void> Instrument::setEmbedding(const SurfaceEmbedding& embedding, std::size_t nodeCount) {
   if (embedding.nodes.size() != embedding.weights.size())
     return Error{"instrument: the embedding has " + std::to_string(embedding.nodes.size()) +

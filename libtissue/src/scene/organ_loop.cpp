@@ -24,6 +24,7 @@ struct OrganLoop::Impl {
   render::MeshHandle toolMesh;
   render::TextureHandle toolColor;
   InstrumentLook instrumentLook;
+  double toolBuiltRadiusMm = 0.0;  ///< the radius the drawn mesh was built with
 };
 
 namespace {
@@ -80,6 +81,34 @@ Result<OrganLoop> OrganLoop::create(const scenario::Scenario& scenario, SurfaceM
   return OrganLoop(std::move(impl));
 }
 
+Result<void> OrganLoop::buildToolMesh() {
+  Impl& s = *m_impl;
+  const sim::Instrument* tool = s.run->instrument();
+  if (!s.renderer || !s.config.drawInstrument || !tool) return {};
+  if (s.toolMesh) s.renderer->destroyMesh(s.toolMesh), s.toolMesh = {};
+  InstrumentLook look = s.config.instrumentLook;
+  if (tool->config().shape.kind == sim::ToolShapeKind::Capsule) {
+    const auto& a = tool->pose().axis;
+    look.shaftDirection = {float(a.x), float(a.y), float(a.z)};
+  }
+  s.tool = makeInstrumentMesh(tool->config().shape, look);
+  s.instrumentLook = look;
+  s.toolBuiltRadiusMm = tool->config().shape.radius;
+  s.toolPositions.resize(s.tool.positions.size());
+  s.toolNormals.resize(s.tool.normals.size());
+  placeTool(s.tool, tool->config().shape, look.shaftDirection, tool->pose(), s.toolPositions, s.toolNormals);
+  auto mesh = s.renderer->createMesh(
+      {s.toolPositions, s.toolNormals, s.tool.tangents, s.tool.uvs, s.tool.triangles, {}});
+  if (!mesh) return mesh.error();
+  s.toolMesh = *mesh;
+  if (!s.toolColor) {
+    auto color = s.renderer->createTexture(steelGrey());
+    if (!color) return color.error();
+    s.toolColor = *color;
+  }
+  return {};
+}
+
 Result<render::MeshHandle> OrganLoop::attach(render::Renderer& renderer) {
   detach();
   const auto& organ = *m_impl->surface;
@@ -90,28 +119,7 @@ Result<render::MeshHandle> OrganLoop::attach(render::Renderer& renderer) {
   m_impl->renderer = &renderer;
   m_impl->mesh = *handle;
   // The instrument: built once around its tip, moved in phase 3.
-  const sim::Instrument* tool = m_impl->run->instrument();
-  if (m_impl->config.drawInstrument && tool) {
-    InstrumentLook look = m_impl->config.instrumentLook;
-    if (tool->config().shape.kind == sim::ToolShapeKind::Capsule) {
-      const auto& a = tool->pose().axis;
-      look.shaftDirection = {float(a.x), float(a.y), float(a.z)};
-    }
-    Impl& s = *m_impl;
-    s.tool = makeInstrumentMesh(tool->config().shape, look);
-    s.instrumentLook = look;
-    s.toolPositions.resize(s.tool.positions.size());
-    s.toolNormals.resize(s.tool.normals.size());
-    placeTool(s.tool, tool->config().shape, look.shaftDirection, tool->pose(), s.toolPositions,
-              s.toolNormals);
-    auto mesh = renderer.createMesh(
-        {s.toolPositions, s.toolNormals, s.tool.tangents, s.tool.uvs, s.tool.triangles, {}});
-    if (!mesh) return mesh.error();
-    s.toolMesh = *mesh;
-    auto color = renderer.createTexture(steelGrey());
-    if (!color) return color.error();
-    s.toolColor = *color;
-  }
+  if (auto tool = buildToolMesh(); !tool) return tool.error();
   return *handle;
 }
 
@@ -137,7 +145,7 @@ void OrganLoop::detach() {
   s.toolColor = {};
 }
 
-Result<LoopFrame> OrganLoop::advance(const InstrumentInput& input, const RenderRequest* request) {
+Result<LoopFrame> OrganLoop::step(const InstrumentInput& input) {
   Impl& s = *m_impl;
   LoopFrame f;
   Stopwatch total;
@@ -149,6 +157,8 @@ Result<LoopFrame> OrganLoop::advance(const InstrumentInput& input, const RenderR
     if (auto g = s.run->setGrasp(*input.grasp); !g) return g.error();
   if (input.pose)
     if (auto p = s.run->setInstrumentTarget(*input.pose); !p) return p.error();
+  if (input.radiusMm)
+    if (auto r = s.run->setInstrumentRadius(*input.radiusMm); !r) return r.error();
   auto metrics = s.run->advance();
   if (!metrics) return metrics.error();
   if (!metrics->finite)
@@ -163,28 +173,43 @@ Result<LoopFrame> OrganLoop::advance(const InstrumentInput& input, const RenderR
   phase.restart();
   f.mesh = s.surface->update(s.positions);
   f.ms.meshMs = phase.elapsedMs();
+  f.ms.totalMs = total.elapsedMs();
+  return f;
+}
 
+Result<double> OrganLoop::upload() {
+  Impl& s = *m_impl;
+  if (!s.renderer) return 0.0;
   // 3 upload: what deforms, in place (the topology and UVs never change).
-  if (s.renderer) {
-    phase.restart();
-    const auto& m = *s.surface;
-    auto up =
-        s.renderer->updateMesh(s.mesh, {0, m.positions(), m.normals(), m.tangents(),
-                                        s.config.uploadPlanes ? m.planes() : std::span<const Float4>{}});
-    if (!up) return up.error();
-    if (const sim::Instrument* tool = s.run->instrument(); tool && s.toolMesh) {
-      placeTool(s.tool, tool->config().shape, s.instrumentLook.shaftDirection, tool->pose(), s.toolPositions,
-                s.toolNormals);
-      if (auto moved = s.renderer->updateMesh(s.toolMesh, {0, s.toolPositions, s.toolNormals, {}, {}});
-          !moved)
-        return moved.error();
-    }
-    f.ms.uploadMs = phase.elapsedMs();
+  Stopwatch phase;
+  const auto& m = *s.surface;
+  auto up = s.renderer->updateMesh(s.mesh, {0, m.positions(), m.normals(), m.tangents(),
+                                            s.config.uploadPlanes ? m.planes() : std::span<const Float4>{}});
+  if (!up) return up.error();
+  if (const sim::Instrument* tool = s.run->instrument(); tool && s.toolMesh) {
+    if (tool->config().shape.radius != s.toolBuiltRadiusMm)  // a host switched instruments
+      if (auto rebuilt = buildToolMesh(); !rebuilt) return rebuilt.error();
+    placeTool(s.tool, tool->config().shape, s.instrumentLook.shaftDirection, tool->pose(), s.toolPositions,
+              s.toolNormals);
+    if (auto moved = s.renderer->updateMesh(s.toolMesh, {0, s.toolPositions, s.toolNormals, {}, {}}); !moved)
+      return moved.error();
   }
+  return phase.elapsedMs();
+}
 
+Result<LoopFrame> OrganLoop::advance(const InstrumentInput& input, const RenderRequest* request) {
+  Impl& s = *m_impl;
+  Stopwatch total;
+  // 1 simulate, 2 mesh
+  auto f = step(input);
+  if (!f) return f.error();
+  // 3 upload
+  auto uploaded = upload();
+  if (!uploaded) return uploaded.error();
+  f->ms.uploadMs = *uploaded;
   // 4 render: offscreen (read back into the caller's image) or into the host's framebuffer.
   if (s.renderer && request && request->scene) {
-    phase.restart();
+    Stopwatch phase;
     if (request->host) {
       if (auto r = s.renderer->renderTo(*request->scene, *request->host); !r) return r.error();
     } else {
@@ -192,9 +217,9 @@ Result<LoopFrame> OrganLoop::advance(const InstrumentInput& input, const RenderR
       if (!image) return image.error();
       if (request->image) *request->image = std::move(*image);
     }
-    f.ms.renderMs = phase.elapsedMs();
+    f->ms.renderMs = phase.elapsedMs();
   }
-  f.ms.totalMs = total.elapsedMs();
+  f->ms.totalMs = total.elapsedMs();
   return f;
 }
 

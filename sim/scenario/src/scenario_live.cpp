@@ -18,6 +18,13 @@ Result<void> ScenarioRun::setInstrumentTarget(const sim::ToolPose& pose) {
   return {};
 }
 
+Result<void> ScenarioRun::setInstrumentRadius(double radiusMm) {
+  if (!m_instrument)
+    return Error{m_scenario.file.string() + ": the scenario has no instrument; add an \"instrument\" block"};
+  m_live = true;
+  return m_instrument->setRadius(radiusMm);
+}
+
 Result<void> ScenarioRun::setGrasp(bool grasp) {
   if (!m_instrument)
     return Error{m_scenario.file.string() + ": the scenario has no instrument; add an \"instrument\" block"};

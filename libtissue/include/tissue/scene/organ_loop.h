@@ -34,6 +34,7 @@ namespace tissue::scene {
 struct InstrumentInput {
   std::optional<sim::ToolPose> pose;  ///< mm: the tool moves linearly to it over the frame
   std::optional<bool> grasp;          ///< true grasps, false releases (before the frame's simulation)
+  std::optional<double> radiusMm;     ///< mm, > 0: a new tool radius (its drawn mesh follows at upload)
 };
 
 /// Wall-clock cost of one frame per phase (ms).
@@ -106,6 +107,14 @@ class OrganLoop {
   /// simulation produced non-finite values (never handed on).
   Result<LoopFrame> advance(const InstrumentInput& input = {}, const RenderRequest* render = nullptr);
 
+  /// Phases 1 and 2 only (simulate, mesh): no GL, so a host may run them on its simulation
+  /// thread while its render thread draws the previous frame; then upload() on the GL thread.
+  /// LoopFrame::ms.uploadMs and renderMs stay 0.
+  Result<LoopFrame> step(const InstrumentInput& input = {});
+  /// Phase 3 only: uploads what the last step() changed (attached; the renderer's context
+  /// current). Returns its ms; 0 when not attached.
+  Result<double> upload();
+
   const scenario::ScenarioRun& run() const;
   const mesh::DeformableSurface& surface() const;
   /// The simulated surface positions (mm), one per geometric vertex, as of the last frame.
@@ -115,6 +124,7 @@ class OrganLoop {
   long frame() const;
 
  private:
+  Result<void> buildToolMesh();  ///< (re)creates the drawn instrument (attached, context current)
   struct Impl;
   explicit OrganLoop(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> m_impl;

@@ -110,6 +110,9 @@ class Instrument final : public SubstepHook {
   /// Live input (viewer, haptic device): the tool moves linearly to `pose` over the next frame.
   /// Switches a path-driven tool to live input.
   void setTarget(const ToolPose& pose);
+  /// Live input: a new radius (mm, > 0 and finite) from the next substep on (a host switching
+  /// instruments). Fails, naming the value, otherwise.
+  Result<void> setRadius(double radiusMm);
 
   /// Makes the tool touch the surface carried by the simulated vertices (`nodeCount` of them):
   /// contact and grasp then work on the surface vertices of `embedding` (see SurfaceEmbedding

@@ -61,6 +61,9 @@ class ScenarioRun {
   /// The tool moves linearly to `pose` (mm) over the next frame; the scripted path and actions
   /// stop from now on. Fails without an instrument or on a non-finite pose (naming it).
   Result<void> setInstrumentTarget(const sim::ToolPose& pose);
+  /// The tool's radius (mm, > 0) from the next frame on. Fails without an instrument or on a
+  /// bad radius.
+  Result<void> setInstrumentRadius(double radiusMm);
   /// Grasps (true) or releases (false) now; a no-op when already in that state.
   Result<void> setGrasp(bool grasp);
 

@@ -1,0 +1,67 @@
+#pragma once
+/// \file
+/// Every shading method's settings for one organ, derived from its material file (the one
+/// reader, material_file.h) and its uploaded textures: written once, for tissue-sim, the viewer,
+/// the C API and any host.
+///   lit            Blinn-Phong with the painted base colour and normal map
+///   separable      Jimenez et al. 2015 separable SSS: a kernel of the first layer's dipole
+///                  profile (model and taps from MethodChoices; Freude eq. 5.10, 5.17-5.18)
+///   texture-space  d'Eon et al. 2007 with the culled, depth-sized and clipped maps of Jimenez et
+///                  al. 2008: Gaussians fitted to the same profile (d'Eon eq. 4.15)
+///   ray-march      François et al. 2006: the whole layer stack and its subsurface map
+///   parallax       Oat 2006 (Norberg 2010 §2.2): the inner layer (inner_base) under the
+///                  outer one's opacity
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tissue/core/result.h"
+#include "tissue/render/renderer.h"
+#include "tissue/render/scene.h"
+#include "tissue/render/shading.h"
+#include "tissue/scene/organ_assets.h"
+
+namespace tissue::scene {
+
+/// The choices behind the methods' settings (plain struct with defaults: the main job's).
+struct MethodChoices {
+  std::string kernel =
+      "preintegrated";           ///< separable model: svd, preintegrated, guided, manual, deon, jimenez
+  int taps = 17;                 ///< separable taps, odd, 5..63
+  int rank = 1;                  ///< separable components (svd, deon)
+  int gaussians = 6;             ///< texture-space Gaussians, 1..8
+  int samples = 32;              ///< ray-march samples per pixel, 1..256
+  bool adaptive = true;          ///< ray march: adaptive quality (RayMarchSettings::adaptive)
+  float parallaxDepthMm = 1.5f;  ///< mm, depth of the parallax inner layer below the surface
+};
+
+/// An organ's textures on one renderer (empty handles: not there).
+struct OrganTextures {
+  render::TextureHandle baseColor, normalMap, opacity, innerBase, subsurfaceMap;
+};
+
+/// Uploads the organ's textures (the subsurface map as linear data). The renderer's context
+/// must be current.
+Result<OrganTextures> uploadOrganTextures(render::Renderer& renderer, const OrganAssets& organ);
+/// Frees them (context current).
+void destroyOrganTextures(render::Renderer& renderer, OrganTextures& textures);
+
+/// The methods `organ` can be shaded with, lit first: separable always; texture-space when its
+/// UVs are unique; ray-march with a subsurface map; parallax with an inner layer.
+std::vector<render::ShadingMethod> offeredMethods(const OrganAssets& organ);
+
+/// `method`'s settings for `organ`. Errors when the organ lacks what the method needs (naming
+/// the material file and what to add) or a kernel cannot be built.
+Result<render::MethodSettings> organMethod(render::ShadingMethod method, const OrganAssets& organ,
+                                           const OrganTextures& textures, const MethodChoices& choices = {});
+
+/// The organ as a scene object of `mesh`, with its textures and `method`.
+render::SceneObject organObject(render::MeshHandle mesh, const OrganTextures& textures,
+                                render::MethodSettings method);
+
+/// "lit", "separable", "texture-space", "ray-march" or "parallax"; the error lists them.
+Result<render::ShadingMethod> parseShadingMethod(std::string_view name);
+
+}  // namespace tissue::scene

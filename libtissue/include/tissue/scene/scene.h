@@ -1,0 +1,143 @@
+#pragma once
+/// \file
+/// A scene of organs, as a host embeds it: each organ is a mesh, a material file, a model
+/// transform, a shading method and an optional simulation (a scenario), all set up here once
+/// for tissue-sim, the viewer, the C API and any host. The frame, top to bottom:
+///
+///   step(dt)     1 simulate  2 mesh    fixed scenario frames as time accumulates; no GL, so it
+///                                      may run on a simulation thread (not during render)
+///   render(...)  3 upload    4 render  what changed, then the frame, into a host framebuffer
+///                                      (its depth tested and written) or the scene's own target
+///
+/// GL: create(), addOrgan(), upload(), render*() and the destructor need the context current:
+/// the host's (create() given its getProcAddress) or the scene's own headless one, which these
+/// calls make current themselves. Nothing here reads the environment, aborts or throws.
+/// Units: mm, s, N; model matrices column-major, object mm to world mm.
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "tissue/context/headless_context.h"
+#include "tissue/core/image.h"
+#include "tissue/core/result.h"
+#include "tissue/core/vec_math.h"
+#include "tissue/gl/proc_address.h"
+#include "tissue/render/renderer.h"
+#include "tissue/render/scene.h"
+#include "tissue/scene/organ_assets.h"
+#include "tissue/scene/organ_loop.h"
+#include "tissue/scene/organ_methods.h"
+
+namespace tissue::scene {
+
+/// An organ to add (plain struct with defaults).
+struct OrganDesc {
+  std::filesystem::path mesh;      ///< empty with a scenario: the scenario's own mesh
+  std::filesystem::path material;  ///< data/materials/<organ>.json; empty: defaultMaterial()
+  std::filesystem::path scenario;  ///< data/scenarios/*.json; empty: a static organ
+  Mat4 model = kIdentity4;         ///< column-major, object (mm) to world (mm); rigid + uniform scale
+  render::ShadingMethod method = render::ShadingMethod::Lit;
+  float meshScaleToMm = 1.0f;  ///< mm per file unit of a static organ's mesh (a scenario states its own)
+};
+
+/// Settings of a scene (plain struct with defaults).
+struct SceneSettings {
+  render::RendererSettings renderer;  ///< shaders (embedded or a folder), MSAA; no timers by default
+  context::ContextRequest context;    ///< the scene's own headless context only
+  context::HeadlessOptions headless{.backend = {}, .log = false};  ///< EGL, then OSMesa
+  MaterialFileOptions materials;                                   ///< where material textures are looked up
+  std::filesystem::path sharedMeshesDir;  ///< where scenarios find meshes they name by bare name
+  OrganLoopConfig loop;                   ///< planes, re-fit tolerance, mesh threads, the instrument
+  MethodChoices methods;                  ///< kernel, taps, Gaussians, ray-march samples
+  /// step(dt) runs at most this many scenario frames (a host that stalls does not make the next
+  /// frame slower still); the time beyond is dropped and counted in StepReport::droppedS.
+  int maxFramesPerStep = 4;
+};
+
+/// The instrument as a host moves it (world space).
+struct InstrumentPose {
+  Float3 tipMm{};                 ///< mm, centre of the tool's tip sphere (of a capsule's core)
+  Float3 axis{0.0f, 0.0f, 1.0f};  ///< unit, a capsule's core direction
+  float radiusMm = 0.0f;          ///< mm; <= 0 keeps the scenario's
+};
+
+/// What one step(dt) did.
+struct StepReport {
+  int frames = 0;           ///< scenario frames run
+  double simulatedS = 0.0;  ///< s, their total time
+  double droppedS = 0.0;    ///< s, time not simulated (maxFramesPerStep)
+  LoopPhases ms;            ///< ms, summed over the frames and organs (upload and render: 0)
+  Float3 forceN{};          ///< N, world space, the last frame's force on the tool, over all organs
+  int divergences = 0;      ///< divergence events (rollbacks) in its frames, all recovered
+};
+
+using OrganId = std::size_t;
+
+/// The scene. Movable, not copyable.
+class Scene {
+ public:
+  /// With the host's `getProcAddress` (its context current), the scene renders with the host's
+  /// context. Empty: the scene creates its own headless context (EGL, then OSMesa).
+  static Result<Scene> create(const gl::GetProcAddressFn& getProcAddress, const SceneSettings& settings = {});
+  ~Scene();
+  Scene(Scene&&) noexcept;
+  Scene& operator=(Scene&&) noexcept;
+
+  /// Loads an organ (GL: uploads it). Errors name the file at fault.
+  Result<OrganId> addOrgan(const OrganDesc& organ);
+  /// Switches an organ's method at run time; the error says which this organ offers.
+  Result<void> setMethod(OrganId organ, render::ShadingMethod method);
+  /// Column-major, object mm to world mm: rigid motion and uniform scale.
+  Result<void> setTransform(OrganId organ, const Mat4& model);
+  std::size_t organCount() const;
+  const OrganAssets& assets(OrganId organ) const;
+  /// The organ's simulation loop; nullptr for a static organ.
+  const OrganLoop* loop(OrganId organ) const;
+
+  /// Live instrument input for every simulated organ (in each organ's own frame through its
+  /// model matrix), from the next step on; the scenario's script stops.
+  Result<void> setInstrumentPose(const InstrumentPose& pose);
+  /// Grasps (true) or releases (false) at the next step.
+  Result<void> setGrasp(bool grasp);
+  /// N, world space: the last frame's force on the tool, over all organs.
+  Float3 instrumentForceN() const;
+  /// Draws the scenarios' instruments (true, the default) or leaves them to the host.
+  void setInstrumentVisible(bool visible);
+
+  /// A fixed camera (the host's own: the same view and projection as its frame when depth is
+  /// shared). Until one is set, the camera frames every organ for each render's aspect.
+  void setCamera(const render::Camera& camera);
+  /// Back to framing every organ.
+  void frameOrgans();
+  /// The camera of the last render (framed or fixed).
+  const render::Camera& camera() const;
+  /// Lights, background, exposure (the objects are the scene's). Lights follow the framing
+  /// until this is called.
+  render::Scene& renderScene();
+
+  /// Phases 1-2 for `dtS` seconds of simulation (>= 0, finite). No GL.
+  Result<StepReport> step(double dtS);
+  /// Phase 3 (GL): what the last steps changed. render*() call it.
+  Result<void> upload();
+  /// step(dtS) then upload(): the whole update of a frame.
+  Result<StepReport> update(double dtS);
+
+  /// Phases 3-4 into the host's framebuffer (state restored; see render::Renderer::renderTo).
+  Result<void> render(const render::HostFramebuffer& target);
+  /// Phases 3-4 into the scene's own target, read back (RGBA8, rows top to bottom).
+  Result<Image8> renderImage(int width, int height);
+  /// renderImage, written as PNG atomically.
+  Result<void> renderPng(const std::filesystem::path& png, int width, int height);
+
+  /// The renderer (context current for its calls), e.g. for its last timings.
+  render::Renderer& renderer();
+
+ private:
+  struct Impl;
+  explicit Scene(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> m_impl;
+};
+
+}  // namespace tissue::scene

@@ -1,0 +1,360 @@
+// A scene of organs for apps and hosts: set-up once, step (simulate, mesh), upload, render
+// (scene.h).
+#include "tissue/scene/scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "tissue/context/headless_context.h"
+#include "tissue/core/atomic_file.h"
+#include "tissue/mesh/deformable_surface.h"
+#include "tissue/scenario/scenario.h"
+
+namespace tissue::scene {
+namespace {
+
+/// The uniform scale of a rigid-plus-uniform-scale model matrix (the first column's length).
+float uniformScaleOf(const Mat4& m) {
+  return length({m[0], m[1], m[2]});
+}
+
+sim::Vec3d toVec3d(Float3 v) {
+  return {double(v.x), double(v.y), double(v.z)};
+}
+
+}  // namespace
+
+struct Scene::Impl {
+  SceneSettings settings;
+  std::unique_ptr<context::GlContext> ownContext;  ///< when the host gave no getProcAddress
+  std::optional<render::Renderer> renderer;
+
+  struct Organ {
+    OrganAssets assets;
+    OrganTextures textures;
+    Mat4 model = kIdentity4;
+    render::MethodSettings method;
+    std::optional<OrganLoop> loop;                 ///< simulated organs
+    std::optional<mesh::DeformableSurface> still;  ///< static organs: normals, tangents, planes once
+    render::MeshHandle mesh;                       ///< static organs (a loop holds its own)
+    double pendingS = 0.0;                         ///< s, time not yet simulated
+    bool changed = false;                          ///< stepped since the last upload
+  };
+  std::vector<Organ> organs;
+
+  render::Scene scene;  ///< lights, background, exposure; objects rebuilt per render
+  std::optional<render::Camera> fixedCamera;
+  bool lightsFollowFraming = true;
+  render::Camera lastCamera;
+
+  std::optional<InstrumentPose> lastPose;  ///< world space, for interpolation across frames of one step
+  std::optional<InstrumentPose> pendingPose;
+  std::optional<bool> pendingGrasp;
+  Float3 forceN{};
+  bool instrumentVisible = true;
+
+  Result<void> makeCurrent() {
+    if (ownContext) return ownContext->makeCurrent();
+    return {};
+  }
+  Result<Organ*> organ(OrganId id) {
+    if (id >= organs.size())
+      return Error{"organ " + std::to_string(id) + ": no such organ (the scene has " +
+                   std::to_string(organs.size()) + ")"};
+    return &organs[id];
+  }
+  Bounds3 worldBounds() const {
+    Bounds3 b;
+    for (const Organ& o : organs)
+      b.add(transformBounds(o.model, o.assets.bounds));
+    return b;
+  }
+  /// The camera of a render of `aspect` = width / height, and the lights that follow it.
+  void frame(float aspect) {
+    const Bounds3 b = worldBounds();
+    if (fixedCamera) {
+      lastCamera = *fixedCamera;
+    } else if (!b.empty()) {
+      lastCamera = render::frameBoundingBox(b.lo, b.hi, aspect);
+    }
+    if (lightsFollowFraming && !b.empty() && !scene.lights.empty()) {
+      // The main job's key light: above, right and in front of the field (a surgical lamp).
+      const Float3 c = b.centre();
+      scene.lights[0].positionMm = {c.x + 150.0f, c.y + 200.0f, b.hi.z + 300.0f};
+    }
+    scene.camera = lastCamera;
+  }
+  void buildObjects() {
+    scene.objects.clear();
+    for (const Organ& o : organs) {
+      render::SceneObject object = organObject(o.loop ? o.loop->meshHandle() : o.mesh, o.textures, o.method);
+      // MODEL object.model = o.model;
+      scene.objects.push_back(std::move(object));
+      if (o.loop && instrumentVisible)
+        if (auto tool = o.loop->instrumentObject()) {
+          // MODEL tool->model = o.model;
+          scene.objects.push_back(*tool);
+        }
+    }
+  }
+};
+
+Scene::Scene(std::unique_ptr<Impl> impl) : m_impl(std::move(impl)) {}
+Scene::Scene(Scene&&) noexcept = default;
+Scene& Scene::operator=(Scene&&) noexcept = default;
+
+Scene::~Scene() {
+  if (!m_impl) return;
+  // GL objects die with the context current: the scene's own (a host's must be current).
+  if (m_impl->ownContext) (void)m_impl->ownContext->makeCurrent();
+  for (auto& o : m_impl->organs)
+    if (o.loop) o.loop->detach();
+  m_impl->renderer.reset();
+}
+
+Result<Scene> Scene::create(const gl::GetProcAddressFn& getProcAddress, const SceneSettings& settings) {
+  auto impl = std::make_unique<Impl>();
+  impl->settings = settings;
+  gl::GetProcAddressFn lookup = getProcAddress;
+  if (!lookup) {
+    auto context = context::createHeadlessContext(settings.context, settings.headless);
+    if (!context) return Error{"no headless GL context (EGL, then OSMesa): " + context.error().message};
+    impl->ownContext = std::move(*context);
+    lookup = impl->ownContext->procAddressFunction();
+  }
+  auto renderer = render::Renderer::create(lookup, settings.renderer);
+  if (!renderer) return renderer.error();
+  impl->renderer.emplace(std::move(*renderer));
+  return Scene(std::move(impl));
+}
+
+Result<OrganId> Scene::addOrgan(const OrganDesc& desc) {
+  Impl& s = *m_impl;
+  if (!isAffineInvertible(desc.model))
+    return Error{"organ " + desc.mesh.string() + ": the model matrix must be affine and invertible"};
+  if (auto current = s.makeCurrent(); !current) return current.error();
+  Impl::Organ organ;
+  organ.model = desc.model;
+  // 1 what moves it (a scenario) and what it looks like (mesh, material, textures).
+  std::optional<scenario::Scenario> scenario;
+  OrganSource source{.mesh = desc.mesh,
+                     .material = desc.material,
+                     .meshScaleToMm = desc.meshScaleToMm,
+                     .materialOptions = s.settings.materials,
+                     .uvAtlasFallback = true};
+  if (!desc.scenario.empty()) {
+    auto parsed = scenario::loadScenario(desc.scenario, {.sharedMeshesDir = s.settings.sharedMeshesDir});
+    if (!parsed) return parsed.error();
+    if (source.mesh.empty()) source.mesh = parsed->mesh;
+    source.meshScaleToMm = float(parsed->meshScaleToMm);
+    scenario = std::move(*parsed);
+  } else if (desc.mesh.empty()) {
+    return Error{"organ: give a mesh file, or a scenario that names one"};
+  }
+  auto assets = loadOrganAssets(source);
+  if (!assets) return assets.error();
+  organ.assets = std::move(*assets);
+  // 2 its mesh on the renderer: a loop for a simulated organ, else the rest shape once.
+  render::Renderer& r = *s.renderer;
+  if (scenario) {
+    OrganLoopConfig config = s.settings.loop;
+    config.planes = organ.assets.planes;
+    config.uploadPlanes = true;  // any method may be chosen at run time, ray marching among them
+    auto loop = OrganLoop::create(*scenario, organ.assets.mesh, config);
+    if (!loop) return loop.error();
+    organ.loop.emplace(std::move(*loop));
+    if (auto attached = organ.loop->attach(r); !attached) return attached.error();
+  } else {
+    auto still = mesh::DeformableSurface::create(organ.assets.mesh, organ.assets.planes);
+    if (!still) return still.error();
+    organ.still.emplace(std::move(*still));
+    const auto& m = *organ.still;
+    auto handle =
+        r.createMesh({m.positions(), m.normals(), m.tangents(), m.uvs(), m.triangles(), m.planes()});
+    if (!handle) return handle.error();
+    organ.mesh = *handle;
+  }
+  // 3 its textures and method.
+  auto textures = uploadOrganTextures(r, organ.assets);
+  if (!textures) return textures.error();
+  organ.textures = *textures;
+  auto method = organMethod(desc.method, organ.assets, organ.textures, s.settings.methods);
+  if (!method) return method.error();
+  organ.method = std::move(*method);
+  s.organs.push_back(std::move(organ));
+  return s.organs.size() - 1;
+}
+
+Result<void> Scene::setMethod(OrganId id, render::ShadingMethod method) {
+  auto o = m_impl->organ(id);
+  if (!o) return o.error();
+  auto settings = organMethod(method, (*o)->assets, (*o)->textures, m_impl->settings.methods);
+  if (!settings) return settings.error();
+  (*o)->method = std::move(*settings);
+  return {};
+}
+
+Result<void> Scene::setTransform(OrganId id, const Mat4& model) {
+  auto o = m_impl->organ(id);
+  if (!o) return o.error();
+  if (!isAffineInvertible(model))
+    return Error{"model matrix: must be affine and invertible (column-major, mm)"};
+  (*o)->model = model;
+  return {};
+}
+
+std::size_t Scene::organCount() const {
+  return m_impl->organs.size();
+}
+const OrganAssets& Scene::assets(OrganId id) const {
+  return m_impl->organs.at(id).assets;
+}
+const OrganLoop* Scene::loop(OrganId id) const {
+  const auto& o = m_impl->organs.at(id);
+  return o.loop ? &*o.loop : nullptr;
+}
+
+Result<void> Scene::setInstrumentPose(const InstrumentPose& pose) {
+  if (!isFinite(pose.tipMm) || !isFinite(pose.axis) || !std::isfinite(pose.radiusMm))
+    return Error{"instrument pose: give finite numbers (mm)"};
+  if (length(pose.axis) < 1e-6f) return Error{"instrument pose: the axis must not be zero"};
+  m_impl->pendingPose = pose;
+  return {};
+}
+
+Result<void> Scene::setGrasp(bool grasp) {
+  m_impl->pendingGrasp = grasp;
+  return {};
+}
+
+Float3 Scene::instrumentForceN() const {
+  return m_impl->forceN;
+}
+
+void Scene::setInstrumentVisible(bool visible) {
+  m_impl->instrumentVisible = visible;
+}
+
+void Scene::setCamera(const render::Camera& camera) {
+  m_impl->fixedCamera = camera;
+}
+void Scene::frameOrgans() {
+  m_impl->fixedCamera.reset();
+}
+const render::Camera& Scene::camera() const {
+  return m_impl->lastCamera;
+}
+render::Scene& Scene::renderScene() {
+  m_impl->lightsFollowFraming = false;
+  return m_impl->scene;
+}
+render::Renderer& Scene::renderer() {
+  return *m_impl->renderer;
+}
+
+Result<StepReport> Scene::step(double dtS) {
+  Impl& s = *m_impl;
+  if (!(dtS >= 0.0) || !std::isfinite(dtS)) return Error{"step: dt must be a finite number of seconds >= 0"};
+  StepReport report;
+  // The first pose is taken at once; later ones are approached over the step's frames.
+  const InstrumentPose from = s.lastPose ? *s.lastPose : s.pendingPose.value_or(InstrumentPose{});
+  const std::optional<InstrumentPose> to = s.pendingPose;
+  const std::optional<bool> grasp = s.pendingGrasp;
+  s.pendingPose.reset();
+  s.pendingGrasp.reset();
+  Float3 force{};
+  for (Impl::Organ& o : s.organs) {
+    if (!o.loop) continue;
+    const double frameS = o.loop->run().scenario().frameTime;
+    o.pendingS += dtS;
+    int frames = int(std::floor(o.pendingS / frameS + 1e-9));
+    if (frames > s.settings.maxFramesPerStep) {
+      report.droppedS += (frames - s.settings.maxFramesPerStep) * frameS;
+      frames = s.settings.maxFramesPerStep;
+      o.pendingS = 0.0;
+    } else {
+      o.pendingS = std::max(0.0, o.pendingS - frames * frameS);
+    }
+    // The host's pose in this organ's own frame (the inverse of its model matrix).
+    const Mat4 toLocal = inverseAffine(o.model);
+    const float scale = uniformScaleOf(o.model);
+    for (int k = 0; k < frames; ++k) {
+      InstrumentInput input;
+      if (to) {
+        // The tool moves linearly from the last pose to the new one over this step's frames.
+        const float t = float(k + 1) / float(frames);
+        const Float3 tip = from.tipMm + (to->tipMm - from.tipMm) * t;
+        const Float3 axis = normalizeOr(from.axis + (to->axis - from.axis) * t, to->axis);
+        input.pose = sim::ToolPose{toVec3d(transformPoint(toLocal, tip)),
+                                   toVec3d(normalizeOr(transformDirection(toLocal, axis), {0, 0, 1}))};
+        if (to->radiusMm > 0.0f && k == 0) input.radiusMm = double(to->radiusMm / scale);
+      }
+      if (grasp && k == 0) input.grasp = grasp;
+      auto f = o.loop->step(input);
+      if (!f) return f.error();
+      report.ms.simulateMs += f->ms.simulateMs;
+      report.ms.meshMs += f->ms.meshMs;
+      report.ms.totalMs += f->ms.totalMs;
+      report.divergences += f->simulation.divergenceEvents;
+      if (k + 1 == frames) {
+        const auto& F = f->simulation.forceN;
+        force = force + transformDirection(o.model, {float(F.x), float(F.y), float(F.z)}) * (1.0f / scale);
+      }
+    }
+    if (frames > 0) o.changed = true;
+    report.frames = std::max(report.frames, frames);
+    report.simulatedS = std::max(report.simulatedS, frames * frameS);
+  }
+  if (to) s.lastPose = *to;
+  if (report.frames > 0) s.forceN = force;
+  report.forceN = s.forceN;
+  return report;
+}
+
+Result<void> Scene::upload() {
+  Impl& s = *m_impl;
+  if (auto current = s.makeCurrent(); !current) return current.error();
+  for (Impl::Organ& o : s.organs) {
+    if (!o.loop || !o.changed) continue;
+    auto uploaded = o.loop->upload();
+    if (!uploaded) return uploaded.error();
+    o.changed = false;
+  }
+  return {};
+}
+
+Result<StepReport> Scene::update(double dtS) {
+  auto report = step(dtS);
+  if (!report) return report.error();
+  if (auto up = upload(); !up) return up.error();
+  return report;
+}
+
+Result<void> Scene::render(const render::HostFramebuffer& target) {
+  Impl& s = *m_impl;
+  if (target.width <= 0 || target.height <= 0)
+    return Error{"render: the viewport must be at least 1 x 1 pixels"};
+  if (auto up = upload(); !up) return up.error();
+  s.frame(float(target.width) / float(target.height));
+  s.buildObjects();
+  return s.renderer->renderTo(s.scene, target);
+}
+
+Result<Image8> Scene::renderImage(int width, int height) {
+  Impl& s = *m_impl;
+  if (width <= 0 || height <= 0) return Error{"render: the image must be at least 1 x 1 pixels"};
+  if (auto up = upload(); !up) return up.error();
+  s.frame(float(width) / float(height));
+  s.buildObjects();
+  return s.renderer->renderImage(s.scene, width, height);
+}
+
+Result<void> Scene::renderPng(const std::filesystem::path& png, int width, int height) {
+  auto image = renderImage(width, height);
+  if (!image) return image.error();
+  return writePng(png, *image);
+}
+
+}  // namespace tissue::scene

@@ -1,0 +1,106 @@
+// The one reader of material files and what every method derives from it.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "tissue/scene/material_file.h"
+
+namespace tissue::scene {
+namespace {
+
+const std::filesystem::path kData = TISSUE_TEST_DATA_DIR;
+
+std::filesystem::path writeFile(const std::string& name, const std::string& text) {
+  const auto dir = std::filesystem::path(TISSUE_TEST_OUTPUT_DIR) / "scene" / "materials";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
+TEST(MaterialFile, TheDataLiverHasItsFiveLayersAndEveryTexture) {
+  auto m = readMaterialFile(kData / "materials" / "liver.json");
+  ASSERT_TRUE(m.ok()) << m.error().message;
+  EXPECT_EQ(m->name, "liver");
+  ASSERT_EQ(m->layers.size(), 5u);  // 4 boundaries of one RGBA map bound 4 + 1 layers (François §2.1)
+  EXPECT_FLOAT_EQ(m->depthScaleMm, 3.0f);
+  EXPECT_FLOAT_EQ(m->ior, 1.3f);
+  for (const auto* t : {&m->textures.subsurface, &m->textures.baseColor, &m->textures.normalMap,
+                        &m->textures.opacity, &m->textures.innerBase})
+    EXPECT_TRUE(std::filesystem::exists(*t)) << t->string();
+  // Each layer keeps sigma_t >= sigma_s > 0: absorption is what is left.
+  for (const auto& l : m->layers) {
+    EXPECT_GE(l.sigmaT.x, l.sigmaS.x);
+    EXPECT_GT(l.sigmaS.x, 0.0f);
+  }
+}
+
+TEST(MaterialFile, TheOpticalMaterialIsTheFirstLayerWithAbsorptionLeftOver) {
+  auto m = readMaterialFile(kData / "materials" / "liver.json");
+  ASSERT_TRUE(m.ok()) << m.error().message;
+  const auto o = opticalMaterial(*m);
+  const auto& l = m->layers.front();
+  EXPECT_NEAR(o.sigmaA[0], double(l.sigmaT.x) - double(l.sigmaS.x), 1e-6);
+  EXPECT_NEAR(o.sigmaA[2], double(l.sigmaT.z) - double(l.sigmaS.z), 1e-6);
+  EXPECT_NEAR(o.sigmaS[1], double(l.sigmaS.y), 1e-6);
+  EXPECT_NEAR(o.g, double(l.g), 1e-6);
+  EXPECT_NEAR(o.eta, double(m->ior), 1e-6);
+  EXPECT_FLOAT_EQ(firstLayerMinSigmaT(*m), std::min({l.sigmaT.x, l.sigmaT.y, l.sigmaT.z}));
+}
+
+TEST(MaterialFile, TheLayerStackOfTheDataLiverValidates) {
+  auto m = readMaterialFile(kData / "materials" / "liver.json");
+  ASSERT_TRUE(m.ok()) << m.error().message;
+  auto map = readImage(m->textures.subsurface, 4);
+  ASSERT_TRUE(map.ok()) << map.error().message;
+  auto stack = layerStack(*m, *map);
+  ASSERT_TRUE(stack.ok()) << stack.error().message;
+  EXPECT_EQ(stack->boundaryCount(), 4);
+  EXPECT_EQ(stack->layers.size(), 5u);
+  EXPECT_FLOAT_EQ(stack->depthScaleMm, 3.0f);
+}
+
+TEST(MaterialFile, ErrorsNameTheFileAndTheKey) {
+  const auto missing = readMaterialFile(kData / "materials" / "no_such_organ.json");
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.error().message.find("no_such_organ.json"), std::string::npos);
+
+  const auto badSigma =
+      writeFile("bad_sigma.json", R"({"layers": [{"sigma_s": [1, 1], "sigma_t": [2, 2, 2], "g": 0}]})");
+  const auto a = readMaterialFile(badSigma);
+  ASSERT_FALSE(a.ok());
+  EXPECT_NE(a.error().message.find("bad_sigma.json"), std::string::npos);
+  EXPECT_NE(a.error().message.find("layers[0]"), std::string::npos);
+  EXPECT_NE(a.error().message.find("sigma_s"), std::string::npos);
+
+  const auto gain =
+      writeFile("gain.json", R"({"layers": [{"sigma_s": [3, 3, 3], "sigma_t": [2, 2, 2], "g": 0}]})");
+  const auto b = readMaterialFile(gain);
+  ASSERT_FALSE(b.ok());
+  EXPECT_NE(b.error().message.find("sigma_t >= sigma_s"), std::string::npos);
+
+  const auto noTexture = writeFile(
+      "no_texture.json",
+      R"({"layers": [{"sigma_s": [1, 1, 1], "sigma_t": [2, 2, 2], "g": 0.5}], "textures": {"base_color": "nowhere/x.png"}})");
+  const auto c = readMaterialFile(noTexture);
+  ASSERT_FALSE(c.ok());
+  EXPECT_NE(c.error().message.find("nowhere/x.png"), std::string::npos);
+  EXPECT_NE(c.error().message.find("textures.base_color"), std::string::npos);
+
+  const auto notJson = writeFile("not_json.json", "{ layers: ");
+  const auto d = readMaterialFile(notJson);
+  ASSERT_FALSE(d.ok());
+  EXPECT_NE(d.error().message.find("not a JSON object"), std::string::npos);
+}
+
+TEST(MaterialFile, TheDefaultMaterialIsAValidOrgan) {
+  const auto m = defaultMaterial();
+  ASSERT_EQ(m.layers.size(), 1u);
+  const auto o = opticalMaterial(m);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_GT(o.sigmaA[std::size_t(c)], 0.0);
+    EXPECT_GT(o.sigmaS[std::size_t(c)], 0.0);
+  }
+}
+
+}  // namespace
+}  // namespace tissue::scene

@@ -1,0 +1,154 @@
+// The scene a host embeds: organs from mesh + material + scenario, every method, the instrument
+// in world space through each organ's model matrix, and errors that name the file. Needs GL
+// (the scene's own headless context): fails, never skips, when none comes up.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "tissue/scene/scene.h"
+
+namespace tissue::scene {
+namespace {
+
+const std::filesystem::path kData = TISSUE_TEST_DATA_DIR;
+
+Scene makeScene() {
+  SceneSettings settings;
+  // The build's 1024^2 textures first, then the committed small ones (as the apps do).
+  settings.materials.textureRoots = {TISSUE_TEST_GENERATED_DATA_DIR, TISSUE_TEST_DATA_DIR};
+  auto scene = Scene::create({}, settings);
+  if (!scene) ADD_FAILURE() << "no headless context: " << scene.error().message;
+  return std::move(*scene);
+}
+
+OrganDesc liver(bool simulated) {
+  OrganDesc d;
+  d.material = kData / "materials" / "liver.json";
+  if (simulated)
+    d.scenario = kData / "scenarios" / "liver_poke_grasp.json";
+  else
+    d.mesh = kData / "meshes" / "liver.obj";
+  return d;
+}
+
+/// Pixels that differ from the background by more than a few levels.
+std::size_t coveredPixels(const Image8& image) {
+  std::size_t n = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.at(x, y);
+      if (std::abs(p[0] - 13) + std::abs(p[1] - 13) + std::abs(p[2] - 15) > 12) ++n;
+    }
+  return n;
+}
+
+/// Settles the liver for 1 s under its script, then pokes straight down from above the
+/// scenario's poke site to `depthMm` below its first touch, in world space offset by `offset`.
+/// Returns the world force at the deepest point.
+Float3 poke(Scene& scene, Float3 offset, float depthMm) {
+  for (int f = 0; f < 60; ++f)
+    EXPECT_TRUE(scene.step(1.0 / 60.0).ok());
+  const Float3 start{31.82f, 0.0f, 75.0f};
+  const int frames = 100;
+  for (int f = 0; f <= frames; ++f) {
+    const float z = start.z - (75.0f - 59.3f + depthMm) * float(f) / float(frames);
+    EXPECT_TRUE(scene.setInstrumentPose({.tipMm = Float3{start.x, start.y, z} + offset}).ok());
+    auto step = scene.step(1.0 / 60.0);
+    EXPECT_TRUE(step.ok()) << step.error().message;
+  }
+  return scene.instrumentForceN();
+}
+
+TEST(Scene, AStaticOrganRendersInEveryMethodItOffers) {
+  Scene scene = makeScene();
+  auto id = scene.addOrgan(liver(false));
+  ASSERT_TRUE(id.ok()) << id.error().message;
+  const auto offered = offeredMethods(scene.assets(*id));
+  EXPECT_EQ(offered.size(), 5u);  // the data liver has a layer stack, unique UVs and an inner layer
+  std::optional<Image8> lit;
+  for (auto method : offered) {
+    ASSERT_TRUE(scene.setMethod(*id, method).ok());
+    auto image = scene.renderImage(480, 360);
+    ASSERT_TRUE(image.ok()) << image.error().message;
+    EXPECT_GT(coveredPixels(*image), 480u * 360u / 10) << render::shadingMethodName(method);
+    const auto out = std::filesystem::path(TISSUE_TEST_OUTPUT_DIR) / "scene";
+    std::filesystem::create_directories(out);
+    (void)writePng(out / ("scene_" + std::string(render::shadingMethodName(method)) + ".png"), *image);
+    if (!lit) {
+      lit = std::move(*image);
+      continue;
+    }
+    // Each subsurface method changes the organ's look.
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < image->pixels.size(); ++i)
+      differ += std::abs(int(image->pixels[i]) - int(lit->pixels[i])) > 4;
+    std::printf("%s: %zu values differ from lit\n", render::shadingMethodName(method).data(), differ);
+    EXPECT_GT(differ, 100u) << render::shadingMethodName(method);
+  }
+}
+
+TEST(Scene, ThePokeOfAHostPushesBackAndTheImageShowsIt) {
+  Scene scene = makeScene();
+  auto id = scene.addOrgan(liver(true));
+  ASSERT_TRUE(id.ok()) << id.error().message;
+  ASSERT_NE(scene.loop(*id), nullptr);
+  const Float3 f = poke(scene, {}, 8.0f);
+  EXPECT_GT(f.z, 0.1f) << "the tissue pushes the tool back up";
+  EXPECT_LT(std::abs(f.x) + std::abs(f.y), f.z);
+  auto image = scene.renderImage(160, 120);
+  ASSERT_TRUE(image.ok()) << image.error().message;
+  EXPECT_GT(coveredPixels(*image), 160u * 120u / 10);
+}
+
+TEST(Scene, TheInstrumentActsInEachOrgansOwnFrame) {
+  // The same poke on the organ moved 100 mm along x (world pose moved with it) gives the same
+  // force: the pose goes into the organ's frame through the inverse model matrix.
+  Scene a = makeScene();
+  ASSERT_TRUE(a.addOrgan(liver(true)).ok());
+  const Float3 fa = poke(a, {}, 6.0f);
+  Scene b = makeScene();
+  OrganDesc moved = liver(true);
+  moved.model[12] = 100.0f;
+  ASSERT_TRUE(b.addOrgan(moved).ok());
+  const Float3 fb = poke(b, {100.0f, 0.0f, 0.0f}, 6.0f);
+  EXPECT_GT(fa.z, 0.05f);
+  EXPECT_NEAR(fb.z, fa.z, 1e-3f * std::abs(fa.z) + 1e-5f);
+  // Turned half a turn about z, the poke down is still a poke down; x and y of the force turn.
+  Scene c = makeScene();
+  OrganDesc turned = liver(true);
+  turned.model = {-1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  ASSERT_TRUE(c.addOrgan(turned).ok());
+  const Float3 fc = poke(c, {-2.0f * 31.82f, 0.0f, 0.0f}, 6.0f);
+  EXPECT_NEAR(fc.z, fa.z, 1e-3f * std::abs(fa.z) + 1e-5f);
+  EXPECT_NEAR(fc.x, -fa.x, 1e-3f * std::abs(fa.z) + 1e-5f);
+}
+
+TEST(Scene, BadInputNamesTheFileOrTheArgument) {
+  Scene scene = makeScene();
+  OrganDesc missing;
+  missing.mesh = "no/such/organ.obj";
+  auto a = scene.addOrgan(missing);
+  ASSERT_FALSE(a.ok());
+  EXPECT_NE(a.error().message.find("no/such/organ.obj"), std::string::npos) << a.error().message;
+
+  OrganDesc badMaterial = liver(false);
+  badMaterial.material = kData / "materials" / "no_such.json";
+  auto b = scene.addOrgan(badMaterial);
+  ASSERT_FALSE(b.ok());
+  EXPECT_NE(b.error().message.find("no_such.json"), std::string::npos) << b.error().message;
+
+  EXPECT_FALSE(parseShadingMethod("phong").ok());
+  EXPECT_NE(parseShadingMethod("phong").error().message.find("ray-march"), std::string::npos);
+  EXPECT_FALSE(scene.setMethod(7, render::ShadingMethod::Lit).ok());
+  EXPECT_FALSE(scene.step(-1.0).ok());
+  EXPECT_FALSE(scene.step(std::nan("")).ok());
+  EXPECT_FALSE(scene.setInstrumentPose({.tipMm = {std::nanf(""), 0, 0}}).ok());
+  Mat4 singular{};
+  auto organ = scene.addOrgan(liver(false));
+  ASSERT_TRUE(organ.ok()) << organ.error().message;
+  EXPECT_FALSE(scene.setTransform(*organ, singular).ok());
+  EXPECT_FALSE(scene.renderImage(0, 10).ok());
+}
+
+}  // namespace
+}  // namespace tissue::scene
