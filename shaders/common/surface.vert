@@ -1,12 +1,15 @@
 #version 330 core
-// Surface vertex stage shared by the shading methods. Positions arrive in world space (mm):
-// the mesh module and the simulator already work there, so there is no model matrix.
+// Surface vertex stage shared by the shading methods. Attributes arrive in object space (mm)
+// and go to world space through the object's model matrix (common/model.glsl; the identity
+// when the mesh is already in world space, as the mesh module and the simulator give it).
 
-layout(location = 0) in vec3 a_position;  // mm
+layout(location = 0) in vec3 a_position;  // mm, object space
 layout(location = 1) in vec3 a_normal;    // unit
 layout(location = 2) in vec4 a_tangent;   // unit T, handedness w = +-1
 layout(location = 3) in vec2 a_uv;
 layout(location = 4) in vec4 a_plane;     // local plane (N_S, d mm), François eq. 14; optional
+
+#include "common/model.glsl"
 
 uniform mat4 u_viewProjection;  // world (mm) to clip space
 
@@ -17,10 +20,10 @@ out vec2 v_uv;
 out vec4 v_plane;
 
 void main() {
-  v_worldPosition = a_position;
-  v_normal = a_normal;
-  v_tangent = a_tangent;
+  v_worldPosition = modelPosition(a_position);
+  v_normal = modelNormal(a_normal);
+  v_tangent = modelTangent(a_tangent);
   v_uv = a_uv;
-  v_plane = a_plane;
-  gl_Position = u_viewProjection * vec4(a_position, 1.0);
+  v_plane = modelPlane(a_plane, a_normal);
+  gl_Position = u_viewProjection * vec4(v_worldPosition, 1.0);
 }

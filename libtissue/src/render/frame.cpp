@@ -1,5 +1,6 @@
-// One frame: shadow:<light> -> clear -> one geometry pass per shading method present ->
-// resolve (MSAA) -> method post passes -> composite -> tonemap. Every pass is named and timed.
+// One frame: shadow:<light> -> clear -> host-depth (HostDepth::TestAndWrite) -> one geometry pass per shading
+// method present -> resolve (MSAA) -> method post passes -> composite -> tonemap. Every pass is named and
+// timed.
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -18,8 +19,8 @@ constexpr std::size_t kMethodCount = std::variant_size_v<MethodSettings>;
 // The frame's objects resolved to GPU names, grouped by method (index = ShadingMethod).
 struct ResolvedObjects {
   std::array<std::vector<ObjectDraw>, kMethodCount> byMethod;
-  std::vector<const MeshBuffers*> meshes;  // every visible object's mesh, for the shadow passes
-  glm::vec3 lo{0.0f}, hi{0.0f};            // mm, their bounds
+  std::vector<ShadowCaster> casters;  // every visible object's mesh and model, for the shadow passes
+  glm::vec3 lo{0.0f}, hi{0.0f};       // mm, their world bounds
   int count = 0;
 };
 
@@ -57,7 +58,12 @@ Result<ResolvedObjects> resolveObjects(std::span<const SceneObject> objects,
       return Error{"renderer: scene object " + std::to_string(i) + " names mesh " +
                    std::to_string(o.mesh.id) + ", which this renderer does not hold (createMesh it first)"};
     }
+    auto transform = makeModelTransform(o.model);
+    if (!transform)
+      return Error{"renderer: scene object " + std::to_string(i) + ": " + transform.error().message};
     ObjectDraw d{&o, &mesh->second, defaultBase, 0, static_cast<float>(i + 1)};
+    d.transform = *transform;
+    transformBounds(d.transform.model, mesh->second.lo(), mesh->second.hi(), d.lo, d.hi);
     for (auto [handle, name, what] : {std::tuple{o.baseColor, &d.baseColor, "baseColor"},
                                       std::tuple{o.normalMap, &d.normalMap, "normalMap"}}) {
       if (!handle) continue;
@@ -80,10 +86,9 @@ Result<ResolvedObjects> resolveObjects(std::span<const SceneObject> objects,
       d.methodTextures[k] = t->second.id();
     }
     out.byMethod[o.method.index()].push_back(d);
-    out.meshes.push_back(&mesh->second);
-    const glm::vec3 lo = toGlm(mesh->second.lo()), hi = toGlm(mesh->second.hi());
-    out.lo = first ? lo : glm::min(out.lo, lo);
-    out.hi = first ? hi : glm::max(out.hi, hi);
+    out.casters.push_back({&mesh->second, d.transform.model});
+    out.lo = first ? d.lo : glm::min(out.lo, d.lo);
+    out.hi = first ? d.hi : glm::max(out.hi, d.hi);
     first = false;
   }
   return out;
@@ -107,7 +112,7 @@ Result<void> clearTargets(const FrameContext& frame) {
 }  // namespace
 
 Result<void> Renderer::Impl::renderFrame(const Scene& scene, int width, int height, GLuint framebuffer, int x,
-                                         int y, bool writeBackground) {
+                                         int y, bool writeBackground, HostDepth depth) {
   const gl::GlApi& g = gl();
   // Step 1: the objects (the single-mesh API's when the scene names none) and the lights.
   std::vector<SceneObject> single;
@@ -115,7 +120,7 @@ Result<void> Renderer::Impl::renderFrame(const Scene& scene, int width, int heig
   if (objects.empty()) {
     if (!singleMesh) return Error{"renderer: no mesh; call setMesh first, or give the scene objects"};
     single.push_back({singleMesh, singleBaseColor, singleNormalMapping ? singleNormalMap : TextureHandle{},
-                      scene.material, LitSettings{}, true});
+                      scene.material, LitSettings{}, true, kIdentityModel});
     objects = single;
   }
   auto resolved = resolveObjects(objects, meshes, textures, defaultBaseColor.id());
@@ -142,11 +147,15 @@ Result<void> Renderer::Impl::renderFrame(const Scene& scene, int width, int heig
   for (int i = 0; i < lights->count; ++i) {
     if (lights->shadowLayer[static_cast<std::size_t>(i)] < 0) continue;
     auto r = passes.run("shadow:" + std::to_string(i),
-                        [&] { return shadows.draw(g, *lights, i, resolved->meshes); });
+                        [&] { return shadows.draw(g, *lights, i, resolved->casters); });
     if (!r) return r;
   }
   // Step 3: geometry, one pass (or more) per shading method present; one switch (STYLE rule 5).
   if (auto r = clearTargets(frame); !r) return r;
+  const bool hostDepthOn = depth == HostDepth::TestAndWrite;
+  if (hostDepthOn) {
+    if (auto r = hostDepth.load(frame, framebuffer, x, y); !r) return r;
+  }
   for (std::size_t m = 0; m < kMethodCount; ++m) {
     const std::span<const ObjectDraw> group = resolved->byMethod[m];
     if (group.empty()) continue;
@@ -187,7 +196,7 @@ Result<void> Renderer::Impl::renderFrame(const Scene& scene, int width, int heig
   }
   // Step 5: HDR composite and tone map into the caller's framebuffer.
   if (auto r = post.composite(frame); !r) return r;
-  return post.tonemap(frame, framebuffer, x, y, writeBackground);
+  return post.tonemap(frame, framebuffer, x, y, writeBackground && !hostDepthOn, hostDepthOn);
 }
 
 }  // namespace tissue::render

@@ -69,13 +69,18 @@ Result<void> FrameTargets::ensure(const gl::GlApi& gl, int width, int height, in
   makeTexture(gl, m_radiance, GL_RGBA16F, width, height);
   makeTexture(gl, m_diffuse, GL_RGBA16F, width, height);
   makeTexture(gl, m_position, GL_RGBA32F, width, height);
-  makeRenderbuffer(gl, m_depth, GL_DEPTH_COMPONENT24, width, height, 0);
+  m_depth = gl::Texture::create(gl);
+  gl.BindTexture(GL_TEXTURE_2D, m_depth.id());
+  gl.TexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, width, height, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT,
+                nullptr);
+  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // complete without mip-maps
+  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   m_resolved = gl::Framebuffer::create(gl);
   gl.BindFramebuffer(GL_FRAMEBUFFER, m_resolved.id());
   gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_radiance.id(), 0);
   gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, m_diffuse.id(), 0);
   gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, m_position.id(), 0);
-  gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m_depth.id());
+  gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, m_depth.id(), 0);
   gl.DrawBuffers(3, kGeometryBuffers);
   if (auto r = complete(gl, "geometry"); !r) return r;
   // Step 2: the multisampled geometry framebuffer, of textures (the separable resolve reads

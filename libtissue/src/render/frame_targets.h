@@ -2,8 +2,8 @@
 // The renderer's intermediate targets for one image size:
 //   geometry: radiance (RGBA16F, linear HDR; a = coverage), diffuse (RGBA16F, the separable
 //     objects' diffuse before the blur; a = object id), position (RGBA32F, world mm + view depth
-//     mm) and depth; multisampled textures when MSAA is on (sampled by the separable method's
-//     resolve), resolved into textures;
+//     mm) and depth (a texture: the tone map reads it for HostDepth::TestAndWrite); multisampled textures
+//     when MSAA is on (sampled by the separable method's resolve), resolved into textures;
 //   blurTemp, blurred (RGBA16F): the separable blur's two passes;
 //   composite (RGBA16F): radiance + blurred diffuse, the tone map's input;
 //   output (RGBA8): the tone-mapped sRGB image read back by renderImage.
@@ -28,6 +28,10 @@ class FrameTargets {
   GLuint radiance() const { return m_radiance.id(); }
   GLuint diffuse() const { return m_diffuse.id(); }
   GLuint position() const { return m_position.id(); }
+  /// The single-sample depth texture (GL_DEPTH_COMPONENT24) of the geometry passes without MSAA.
+  GLuint depth() const { return m_depth.id(); }
+  /// The multisampled depth texture of the geometry passes with MSAA (0 without).
+  GLuint msaaDepth() const { return m_msaaDepth.id(); }
   /// The single-sample geometry framebuffer (radiance, diffuse, position: attachments 0..2).
   GLuint resolvedFramebuffer() const { return m_resolved.id(); }
   /// The multisampled diffuse and position (GL_TEXTURE_2D_MULTISAMPLE; 0 without MSAA).
@@ -47,9 +51,9 @@ class FrameTargets {
 
  private:
   int m_width = 0, m_height = 0, m_samples = -1;
-  gl::Texture m_radiance, m_diffuse, m_position, m_blurTemp, m_blurred, m_composite;
+  gl::Texture m_radiance, m_diffuse, m_position, m_depth, m_blurTemp, m_blurred, m_composite;
   gl::Texture m_msaaRadiance, m_msaaDiffuse, m_msaaPosition, m_msaaDepth;  // multisampled
-  gl::Renderbuffer m_depth, m_output;
+  gl::Renderbuffer m_output;
   gl::Framebuffer m_resolved, m_msaa, m_blurTempFb, m_blurredFb, m_compositeFb, m_outputFb;
 };
 

@@ -25,6 +25,19 @@ Result<PostPasses> PostPasses::create(const gl::GlApi& gl, const gl::ShaderLibra
   if (!tonemap) return tonemap.error();
   p.m_composite = std::move(*composite);
   p.m_tonemap = std::move(*tonemap);
+  for (int ms = 0; ms < 2; ++ms) {
+    const gl::ShaderDefine single[] = {{"TISSUE_WRITE_DEPTH", "1"}};
+    const gl::ShaderDefine multi[] = {{"TISSUE_WRITE_DEPTH", "1"}, {"TISSUE_DEPTH_MS", "1"}};
+    auto program = gl::buildProgram(gl, library,
+                                    {"post/fullscreen.vert", "post/tonemap.frag",
+                                     ms ? std::span<const gl::ShaderDefine>(multi) : std::span(single)});
+    if (!program) return program.error();
+    const GLuint id = program->id();
+    gl.UseProgram(id);
+    gl.Uniform1i(gl.GetUniformLocation(id, "u_composite"), kUnitMethod0);
+    gl.Uniform1i(gl.GetUniformLocation(id, "u_depth"), kUnitMethod0 + 1);
+    p.m_tonemapDepth[ms] = std::move(*program);
+  }
   gl.UseProgram(p.m_composite.id());
   gl.Uniform1i(gl.GetUniformLocation(p.m_composite.id(), "u_radiance"), kUnitMethod0);
   gl.Uniform1i(gl.GetUniformLocation(p.m_composite.id(), "u_blurredDiffuse"), kUnitMethod0 + 1);
@@ -52,7 +65,7 @@ Result<void> PostPasses::composite(const FrameContext& frame) const {
 }
 
 Result<void> PostPasses::tonemap(const FrameContext& frame, GLuint framebuffer, int x, int y,
-                                 bool writeBackground) const {
+                                 bool writeBackground, bool writeDepth) const {
   return frame.passes.run("tonemap", [&]() -> Result<void> {
     const gl::GlApi& g = frame.gl;
     g.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
@@ -60,8 +73,23 @@ Result<void> PostPasses::tonemap(const FrameContext& frame, GLuint framebuffer, 
     g.Disable(GL_SCISSOR_TEST);
     g.Disable(GL_MULTISAMPLE);
     fullScreenState(g);
-    const GLuint p = m_tonemap.id();
+    const bool multisampled = frame.targets.samples() > 1;
+    const GLuint p = writeDepth ? m_tonemapDepth[multisampled ? 1 : 0].id() : m_tonemap.id();
     g.UseProgram(p);
+    if (writeDepth) {
+      // gl_FragDepth reaches the depth buffer only with the depth test on: GL_ALWAYS.
+      writeBackground = false;
+      g.Enable(GL_DEPTH_TEST);
+      g.DepthFunc(GL_ALWAYS);
+      g.DepthMask(GL_TRUE);
+      g.Uniform1i(g.GetUniformLocation(p, "u_depthSamples"), frame.targets.samples());
+      g.ActiveTexture(GL_TEXTURE0 + kUnitMethod0 + 1);
+      if (multisampled) {
+        g.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, frame.targets.msaaDepth());
+      } else {
+        g.BindTexture(GL_TEXTURE_2D, frame.targets.depth());
+      }
+    }
     const Float3 bg = frame.scene.background;
     g.Uniform1f(g.GetUniformLocation(p, "u_exposure"), frame.scene.exposure);
     g.Uniform3f(g.GetUniformLocation(p, "u_background"), bg.x, bg.y, bg.z);
@@ -70,6 +98,10 @@ Result<void> PostPasses::tonemap(const FrameContext& frame, GLuint framebuffer, 
     g.ActiveTexture(GL_TEXTURE0 + kUnitMethod0);
     g.BindTexture(GL_TEXTURE_2D, frame.targets.composite());
     drawFullScreen(frame);
+    if (writeDepth) {
+      g.Disable(GL_DEPTH_TEST);
+      g.DepthMask(GL_FALSE);
+    }
     return gl::checkGlError(g, "renderer: tonemap pass");
   });
 }

@@ -49,7 +49,8 @@ Result<Renderer> Renderer::create(const gl::GetProcAddressFn& getProcAddress,
   Impl& s = *impl;
   for (auto r : {createMethod(s.lit, g, library), createMethod(s.separable, g, library),
                  createMethod(s.textureSpace, g, library), createMethod(s.rayMarch, g, library),
-                 createMethod(s.parallax, g, library), createMethod(s.post, g, library)}) {
+                 createMethod(s.parallax, g, library), createMethod(s.post, g, library),
+                 createMethod(s.hostDepth, g, library)}) {
     if (!r) return r.error();
   }
   auto shadows = ShadowMaps::create(g, library, settings.shadowMapSize);
@@ -202,8 +203,8 @@ Result<void> Renderer::renderTo(const Scene& scene, const HostFramebuffer& targe
     return Error{"renderer: host framebuffer " + std::to_string(target.framebuffer) + " is incomplete"};
   }
   s.passes.beginFrame(g, s.settings.gpuTimers, s.settings.finishPasses);
-  auto r =
-      s.renderFrame(scene, target.width, target.height, target.framebuffer, target.x, target.y, target.clear);
+  auto r = s.renderFrame(scene, target.width, target.height, target.framebuffer, target.x, target.y,
+                         target.clear, target.depth);
   s.timings.passes = s.passes.finishFrame();
   s.timings.totalCpuMs = total.elapsedMs();
   return r;

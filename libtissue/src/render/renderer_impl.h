@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "frame_targets.h"
+#include "host_depth.h"
 #include "mesh_buffers.h"
 #include "methods/lit.h"
 #include "methods/parallax.h"
@@ -30,6 +31,7 @@ struct Renderer::Impl {
   ParallaxMethod parallax;
   ShadowMaps shadows;
   PostPasses post;
+  HostDepthPass hostDepth;
   // Resources by handle id.
   std::map<std::uint32_t, MeshBuffers> meshes;
   std::map<std::uint32_t, gl::Texture> textures;
@@ -48,10 +50,12 @@ struct Renderer::Impl {
 
   const gl::GlApi& gl() const { return *api; }
 
-  /// Every pass up to and including the HDR composite, into the frame targets; then `finish`
-  /// (the tone map into the caller's framebuffer). Defined in frame.cpp.
+  /// Every pass up to and including the HDR composite, into the frame targets, then the tone
+  /// map into the caller's framebuffer at (x, y). `depth`: HostDepth::TestAndWrite reads that
+  /// framebuffer's depth before the geometry passes and writes it in the tone map.
+  /// Defined in frame.cpp.
   Result<void> renderFrame(const Scene& scene, int width, int height, GLuint framebuffer, int x, int y,
-                           bool writeBackground);
+                           bool writeBackground, HostDepth depth = HostDepth::Ignore);
 };
 
 }  // namespace tissue::render

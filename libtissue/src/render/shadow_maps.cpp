@@ -42,7 +42,7 @@ Result<ShadowMaps> ShadowMaps::create(const gl::GlApi& gl, const gl::ShaderLibra
 }
 
 Result<void> ShadowMaps::draw(const gl::GlApi& gl, const LightFrame& lights, int index,
-                              std::span<const MeshBuffers* const> meshes) {
+                              std::span<const ShadowCaster> casters) {
   const int layer = lights.shadowLayer[static_cast<std::size_t>(index)];
   gl.BindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
   gl.FramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, m_texture.id(), 0, layer);
@@ -63,9 +63,11 @@ Result<void> ShadowMaps::draw(const gl::GlApi& gl, const LightFrame& lights, int
                       glm::value_ptr(lights.shadowMatrix[static_cast<std::size_t>(index)]));
   gl.Uniform4fv(gl.GetUniformLocation(p, "u_light"), 1,
                 glm::value_ptr(lights.vector[static_cast<std::size_t>(index)]));
-  for (const MeshBuffers* mesh : meshes) {
-    gl.BindVertexArray(mesh->vertexArray());
-    gl.DrawElements(GL_TRIANGLES, mesh->indexCount(), GL_UNSIGNED_INT, nullptr);
+  const GLint model = gl.GetUniformLocation(p, "u_model");
+  for (const ShadowCaster& c : casters) {
+    gl.UniformMatrix4fv(model, 1, GL_FALSE, glm::value_ptr(c.model));
+    gl.BindVertexArray(c.mesh->vertexArray());
+    gl.DrawElements(GL_TRIANGLES, c.mesh->indexCount(), GL_UNSIGNED_INT, nullptr);
   }
   return gl::checkGlError(gl, "renderer: shadow pass");
 }

@@ -14,13 +14,19 @@
 
 namespace tissue::render {
 
+/// One object drawn into the shadow maps: its mesh and model matrix (object mm to world mm).
+struct ShadowCaster {
+  const MeshBuffers* mesh = nullptr;
+  glm::mat4 model{1.0f};
+};
+
 class ShadowMaps {
  public:
   /// Builds the shadow program; `size` pixels per map.
   static Result<ShadowMaps> create(const gl::GlApi& gl, const gl::ShaderLibrary& library, int size);
-  /// Draws light `index`'s layer from `meshes` (its matrix and layer from `lights`).
+  /// Draws light `index`'s layer from `casters` (its matrix and layer from `lights`).
   Result<void> draw(const gl::GlApi& gl, const LightFrame& lights, int index,
-                    std::span<const MeshBuffers* const> meshes);
+                    std::span<const ShadowCaster> casters);
   /// The texture array (GL_TEXTURE_2D_ARRAY, R32F, kMaxLights layers).
   GLuint texture() const { return m_texture.id(); }
 

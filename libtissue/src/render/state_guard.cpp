@@ -32,14 +32,20 @@ StateGuard::StateGuard(const gl::GlApi& gl) : m_gl(gl) {
     gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &m_texture2d[unit]);
     gl.GetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &m_texture2dArray[unit]);
     gl.GetIntegerv(GL_TEXTURE_BINDING_2D_MULTISAMPLE, &m_texture2dMultisample[unit]);
+    gl.GetIntegerv(GL_SAMPLER_BINDING, &m_sampler[unit]);
+    // A host's sampler object would override the renderer's texture parameters.
+    if (m_sampler[unit] != 0) gl.BindSampler(static_cast<GLuint>(unit), 0);
   }
   gl.ActiveTexture(static_cast<GLenum>(m_activeTexture));
   gl.GetIntegerv(GL_DEPTH_FUNC, &m_depthFunc);
   gl.GetIntegerv(GL_CULL_FACE_MODE, &m_cullMode);
   gl.GetIntegerv(GL_FRONT_FACE, &m_frontFace);
+  gl.GetIntegerv(GL_POLYGON_MODE, m_polygonMode);
   gl.GetIntegerv(GL_PACK_ALIGNMENT, &m_packAlignment);
   gl.GetIntegerv(GL_UNPACK_ALIGNMENT, &m_unpackAlignment);
   gl.GetIntegerv(GL_UNPACK_ROW_LENGTH, &m_unpackRowLength);
+  gl.GetIntegerv(GL_UNPACK_SKIP_PIXELS, &m_unpackSkipPixels);
+  gl.GetIntegerv(GL_UNPACK_SKIP_ROWS, &m_unpackSkipRows);
   gl.GetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &m_pixelUnpackBuffer);
   gl.GetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &m_pixelPackBuffer);
   gl.GetBooleanv(GL_DEPTH_WRITEMASK, &m_depthMask);
@@ -54,6 +60,17 @@ StateGuard::StateGuard(const gl::GlApi& gl) : m_gl(gl) {
   m_scissorTest = gl.IsEnabled(GL_SCISSOR_TEST);
   m_srgb = gl.IsEnabled(GL_FRAMEBUFFER_SRGB);
   m_multisample = gl.IsEnabled(GL_MULTISAMPLE);
+  // The baseline of the renderer's passes (see the class comment).
+  for (std::size_t i = 0; i < kDisabledCaps.size(); ++i) {
+    m_disabledCaps[i] = gl.IsEnabled(kDisabledCaps[i]);
+    if (m_disabledCaps[i]) gl.Disable(kDisabledCaps[i]);
+  }
+  gl.PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  // Uploads and allocations (glTexImage* with nullptr) read client memory, never a host's buffer.
+  gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+  gl.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  gl.PixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+  gl.PixelStorei(GL_UNPACK_SKIP_ROWS, 0);
 }
 
 StateGuard::~StateGuard() {
@@ -72,14 +89,19 @@ StateGuard::~StateGuard() {
     gl.BindTexture(GL_TEXTURE_2D, name(m_texture2d[unit]));
     gl.BindTexture(GL_TEXTURE_2D_ARRAY, name(m_texture2dArray[unit]));
     gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, name(m_texture2dMultisample[unit]));
+    if (m_sampler[unit] != 0) gl.BindSampler(static_cast<GLuint>(unit), name(m_sampler[unit]));
   }
   gl.ActiveTexture(static_cast<GLenum>(m_activeTexture));
   gl.DepthFunc(static_cast<GLenum>(m_depthFunc));
   gl.CullFace(static_cast<GLenum>(m_cullMode));
   gl.FrontFace(static_cast<GLenum>(m_frontFace));
+  // Core profiles keep one mode for both faces (glPolygonMode takes GL_FRONT_AND_BACK only).
+  gl.PolygonMode(GL_FRONT_AND_BACK, static_cast<GLenum>(m_polygonMode[0]));
   gl.PixelStorei(GL_PACK_ALIGNMENT, m_packAlignment);
   gl.PixelStorei(GL_UNPACK_ALIGNMENT, m_unpackAlignment);
   gl.PixelStorei(GL_UNPACK_ROW_LENGTH, m_unpackRowLength);
+  gl.PixelStorei(GL_UNPACK_SKIP_PIXELS, m_unpackSkipPixels);
+  gl.PixelStorei(GL_UNPACK_SKIP_ROWS, m_unpackSkipRows);
   gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, name(m_pixelUnpackBuffer));
   gl.BindBuffer(GL_PIXEL_PACK_BUFFER, name(m_pixelPackBuffer));
   gl.DepthMask(m_depthMask);
@@ -95,6 +117,8 @@ StateGuard::~StateGuard() {
   setEnabled(gl, GL_SCISSOR_TEST, m_scissorTest);
   setEnabled(gl, GL_FRAMEBUFFER_SRGB, m_srgb);
   setEnabled(gl, GL_MULTISAMPLE, m_multisample);
+  for (std::size_t i = 0; i < kDisabledCaps.size(); ++i)
+    if (m_disabledCaps[i]) gl.Enable(kDisabledCaps[i]);
 }
 
 }  // namespace tissue::render

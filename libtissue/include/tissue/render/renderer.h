@@ -7,7 +7,8 @@
 /// either into its own offscreen framebuffer, read back to an Image8, or into a host's
 /// framebuffer, and it leaves the host's GL state as it found it (see renderTo).
 ///
-/// The frame: shadow:<light> (one depth pass per shadow-casting light) -> clear -> one pass per
+/// The frame: shadow:<light> (one depth pass per shadow-casting light) -> clear -> host-depth
+/// (renderTo with HostDepth::TestAndWrite only) -> one pass per
 /// shading method present (lit, separable:geometry, ...) into linear HDR targets -> resolve
 /// (MSAA only) -> method post passes (separable:resolve with MSAA, separable:blur-x,
 /// separable:blur-y, and separable:blur-x:r / blur-y:r per further kernel component) -> composite (HDR,
@@ -31,7 +32,7 @@ namespace tissue::render {
 
 /// A triangle mesh as plain arrays (copied at upload; not kept).
 struct MeshArrays {
-  std::span<const Float3> positions;    ///< #V, mm, world space
+  std::span<const Float3> positions;    ///< #V, mm, object space (SceneObject::model takes it to world)
   std::span<const Float3> normals;      ///< #V unit normals
   std::span<const Float4> tangents;     ///< #V (unit T, handedness w = +-1); B = w * cross(N, T)
   std::span<const Float2> uvs;          ///< #V texture coordinates
@@ -51,6 +52,32 @@ struct MeshUpdate {
   std::span<const Float4> planes;     ///< (N_S, d mm); the mesh must have been created with planes
 };
 
+/// What renderTo does with the host framebuffer's depth buffer.
+enum class HostDepth {
+  /// Neither read nor written: the tissue is drawn over whatever the host drew in the viewport.
+  Ignore,
+  /// (a) The tissue is depth-tested against the host's depth buffer as the host left it (an
+  /// instrument the host drew in front hides the tissue), and (b) the tissue's depth is written
+  /// into it where tissue is visible, so that the host can draw afterwards with its depth test
+  /// (a floor drawn later stays hidden behind the tissue). Only pixels covered by tissue get
+  /// colour and depth (HostFramebuffer::clear is ignored: as clear = false); elsewhere the
+  /// host's colour and depth stay as they are.
+  ///
+  /// Contract: the scene's camera must be the host's projection for that viewport: the same
+  /// view (eye, target, up), vertical field of view, aspect (= width / height of the
+  /// viewport), near and far planes (a glm::perspective-style projection), and the host's depth
+  /// is conventional (nearer is smaller, cleared to 1, drawn with GL_LESS or GL_LEQUAL, the same
+  /// glDepthRange as the renderer's passes, which use the current one). The host framebuffer
+  /// needs a depth attachment of 16, 24 or 32 bits (unsigned normalised, with or without 8
+  /// stencil bits) or 32-bit float (with or without stencil); it may be multisampled. The host's
+  /// depth is copied by glBlitFramebuffer into a matching single-sample depth texture (its
+  /// format queried with glGetFramebufferAttachmentParameteriv), never read back to the CPU, and
+  /// a full-screen pass writes it into the renderer's own depth buffer (MSAA or not) before the
+  /// geometry passes ("host-depth"); the tone map writes gl_FragDepth from the renderer's depth
+  /// (the nearest sample with MSAA) where covered and discards elsewhere. No glFinish.
+  TestAndWrite,
+};
+
 /// A framebuffer owned by the host, and where in it to draw.
 struct HostFramebuffer {
   unsigned int framebuffer = 0;  ///< GL name (0 = the default framebuffer)
@@ -59,7 +86,9 @@ struct HostFramebuffer {
   int width = 0;                 ///< viewport size, pixels
   int height = 0;                ///< viewport size, pixels
   /// Fill the viewport's background too; false: only pixels covered by an object are written.
+  /// Ignored (as false) with HostDepth::TestAndWrite.
   bool clear = true;
+  HostDepth depth = HostDepth::Ignore;  ///< the host's depth buffer: ignored, or tested and written
 };
 
 /// One pass of the last frame. GPU time comes from a GL_TIME_ELAPSED query and is -1 when
@@ -176,12 +205,30 @@ class Renderer {
   /// top to bottom. `width` x `height` pixels.
   Result<Image8> renderImage(const Scene& scene, int width, int height);
 
-  /// Renders into the host's framebuffer (the tone-map pass writes its viewport; the host's
-  /// depth buffer is neither read nor written). Restores afterwards: draw/read framebuffer
-  /// bindings, viewport, scissor box and test, program, vertex array, array buffer, active
-  /// texture unit and the 2D and 2D-array textures of units 0-7, depth test/func/mask, cull
-  /// face/mode, front face, blending and its function, colour mask, clear colour and depth,
-  /// FRAMEBUFFER_SRGB and multisample.
+  /// Renders into the host's framebuffer: the tone-map pass writes its viewport; the host's
+  /// depth buffer is ignored or tested and written (HostFramebuffer::depth, HostDepth).
+  ///
+  /// GL state contract (renderTo, renderImage and every other call): what the renderer changes
+  /// it saves first and restores before returning, whether the call succeeds or fails:
+  /// - bindings: draw and read framebuffer, renderbuffer, program, vertex array, array buffer,
+  ///   pixel pack and unpack buffers; the active texture unit; on units 0-7 the 2D, 2D-array
+  ///   and 2D-multisample textures and the sampler object (the renderer's passes use none);
+  /// - viewport, scissor box, scissor test;
+  /// - depth test, depth func, depth write mask, clear depth;
+  /// - cull face (enable), cull face mode, front face; polygon mode (the passes draw GL_FILL);
+  /// - blending (enable), blend functions and equations (RGB and alpha), colour write mask,
+  ///   clear colour;
+  /// - FRAMEBUFFER_SRGB, MULTISAMPLE;
+  /// - enables the passes turn off and restore: stencil test, polygon offset fill,
+  ///   sample alpha-to-coverage, sample coverage, rasterizer discard, primitive restart, colour
+  ///   logic op, CLIP_DISTANCE0-5;
+  /// - pixel store: pack alignment, unpack alignment, unpack row length, unpack skip pixels and
+  ///   rows (the passes upload with 4, 0, 0, 0).
+  /// Not touched: the depth range (used as it is), stencil functions and masks, blend colour,
+  /// the host framebuffer's draw and read buffers, vertex-array contents, uniform buffers, the
+  /// host's queries (with RendererSettings::gpuTimers on, no GL_TIME_ELAPSED query of the host
+  /// may be active). Only the host's viewport rectangle of its colour buffer (and of its depth
+  /// buffer with HostDepth::TestAndWrite) is written.
   Result<void> renderTo(const Scene& scene, const HostFramebuffer& target);
 
   /// Reads an intermediate target of the last frame (float RGBA, rows top to bottom).

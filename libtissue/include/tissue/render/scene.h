@@ -1,9 +1,11 @@
 #pragma once
 /// \file
 /// What the renderer draws: camera, lights and objects as plain structs with defaults.
-/// Lengths are mm in world space (the mesh's own coordinates); colours are linear RGB unless
-/// a field says otherwise. Everything here may change every frame.
+/// Lengths are mm in world space (a mesh's own coordinates taken through its object's model
+/// matrix); colours are linear RGB unless a field says otherwise. Everything here may change
+/// every frame.
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -47,7 +49,38 @@ struct Material {
   Float3 ambient{0.06f, 0.055f, 0.055f};  ///< linear RGB ambient radiance
 };
 
-/// One object of the scene: mesh, textures, material and shading method.
+/// The identity model matrix (column-major): object space is world space.
+inline constexpr std::array<float, 16> kIdentityModel{1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f,
+                                                      0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f};
+
+/// One object of the scene: mesh, textures, material, shading method and model transform.
+///
+/// **The model matrix.** `model` takes the mesh's object space (mm) to world space (mm):
+/// positions by M, normals and the local planes' normals N_S by the normal matrix
+/// (M3^-1)^T (M3 the upper 3x3, computed once per object and frame on the CPU), tangents by M3
+/// (they are surface vectors: M3 T stays tangent to the transformed surface, which the normal
+/// matrix would not keep under non-uniform scale), the planes' offsets d so that the plane
+/// maps onto its image (d' = d (N_S' . M3 N_p) / (N_S' . N_p'), = s d for a uniform scale s).
+/// Every method honours it: lit, separable, texture-space (irradiance pass, culling, clipping
+/// and map sizing from the world bounds and the eye), ray march, parallax (lightmap and
+/// geometry) and the shadow passes (fitted to the transformed bounds).
+/// - Supported: any affine M with det(M3) > 0 (rotation, translation, uniform and non-uniform
+///   scale, shear). An object renders exactly as its mesh pre-transformed by M would (within
+///   float rounding): the rule for every mm-valued setting follows from it.
+/// - mm-valued settings are **world** mm and are not scaled with the object: separable kernel
+///   offsets, texture-space variances, transmittance thicknesses, ray-march depths and layer
+///   coefficients (mm^-1), parallax depths, shadow biases. Scaling an organ by s makes a
+///   larger organ of the same tissue, not a magnified one. Under non-uniform scale the
+///   scattering stays isotropic in world mm. Settings that describe the mesh's own UV layout
+///   in mm (RayMarchSettings::uvPerMm, TextureSpaceSettings::texelsPerMm when given) must be
+///   world values too (divide an object-space value by the scale); texelsPerMm = 0, measured
+///   from the mesh at upload, is divided by the geometric-mean scale cbrt(det M3) (exact for
+///   a uniform scale, an approximation under non-uniform scale).
+/// - Refused (an Error from the render call): a non-finite M, a last row other than
+///   (0, 0, 0, 1) (projective), det(M3) <= 0 (singular, or mirrored: mirroring would flip the
+///   winding and the tangent handedness).
+/// - It supersedes the texture-space irradiance pass's former instance offset (u_offset), which
+///   is gone: an instance is an object with its own model matrix.
 struct SceneObject {
   MeshHandle mesh;
   TextureHandle baseColor;  ///< sRGB base colour; none: a tissue-like constant
@@ -55,6 +88,9 @@ struct SceneObject {
   Material material;
   MethodSettings method;  ///< the shading method and its settings (default: Lit)
   bool visible = true;
+  /// Object space -> world space, mm, column-major (OpenGL's layout: model[col * 4 + row], the
+  /// translation in model[12..14]); default identity. See above for what is supported.
+  std::array<float, 16> model = kIdentityModel;
 };
 
 /// Everything besides the uploaded meshes and textures that one frame needs.

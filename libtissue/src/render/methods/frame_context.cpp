@@ -36,9 +36,17 @@ void setFrameUniforms(const FrameContext& frame, GLuint program) {
   g.BindTexture(GL_TEXTURE_2D_ARRAY, frame.shadowMaps);
 }
 
+void setModelUniforms(const gl::GlApi& gl, GLuint program, const ModelTransform& transform) {
+  gl.UniformMatrix4fv(gl.GetUniformLocation(program, "u_model"), 1, GL_FALSE,
+                      glm::value_ptr(transform.model));
+  gl.UniformMatrix3fv(gl.GetUniformLocation(program, "u_normalMatrix"), 1, GL_FALSE,
+                      glm::value_ptr(transform.normalMatrix));
+}
+
 void drawSurface(const FrameContext& frame, GLuint program, const ObjectDraw& draw) {
   const gl::GlApi& g = frame.gl;
   auto at = [&](const char* name) { return g.GetUniformLocation(program, name); };
+  setModelUniforms(g, program, draw.transform);
   const Material& m = draw.object->material;
   g.Uniform3f(at("u_ambient"), m.ambient.x, m.ambient.y, m.ambient.z);
   g.Uniform1f(at("u_specular"), m.specular);

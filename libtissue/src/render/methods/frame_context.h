@@ -12,6 +12,7 @@
 #include "../frame_targets.h"
 #include "../lights.h"
 #include "../mesh_buffers.h"
+#include "../model_transform.h"
 #include "../pass_timers.h"
 #include "tissue/gl/objects.h"
 #include "tissue/gl/shader_library.h"
@@ -35,6 +36,8 @@ struct ObjectDraw {
   /// The textures the object's method settings name (methodTextureHandles in frame.cpp, same
   /// order), resolved; 0 where a handle is empty.
   std::array<GLuint, kMaxMethodTextures> methodTextures{};
+  ModelTransform transform{};    ///< SceneObject::model with its normal matrix and scale
+  glm::vec3 lo{0.0f}, hi{0.0f};  ///< world bounds, mm (the mesh's bounds through the model)
 };
 
 /// The frame as the methods see it.
@@ -59,7 +62,11 @@ void beginGeometryPass(const FrameContext& frame);
 /// object (camera, lights, shadow maps) on the program in use.
 void setFrameUniforms(const FrameContext& frame, GLuint program);
 
-/// Sets one object's uniforms (material, id) and textures, and draws it.
+/// Sets u_model and u_normalMatrix (common/surface.vert, texture_space/irradiance.vert) on the
+/// program in use.
+void setModelUniforms(const gl::GlApi& gl, GLuint program, const ModelTransform& transform);
+
+/// Sets one object's uniforms (model, material, id) and textures, and draws it.
 void drawSurface(const FrameContext& frame, GLuint program, const ObjectDraw& draw);
 
 /// Surface programs in two variants: vertex normals, and normal-mapped (TISSUE_NORMAL_MAP).

@@ -89,12 +89,8 @@ void IrradianceMap::begin(GLuint program, const IrradianceFrame& frame, const Ir
   // Step 1: the map size of this frame, eq. 3-4 with d to the nearest box corner (Fig. 4).
   m_size = m_maxSize;
   if (settings.depthSize && settings.referenceDistanceMm > 0.0f) {
-    const Float3 lo{frame.boundsLo.x + frame.offsetMm.x, frame.boundsLo.y + frame.offsetMm.y,
-                    frame.boundsLo.z + frame.offsetMm.z};
-    const Float3 hi{frame.boundsHi.x + frame.offsetMm.x, frame.boundsHi.y + frame.offsetMm.y,
-                    frame.boundsHi.z + frame.offsetMm.z};
-    const float s =
-        irradianceMapScale(nearestBoxCornerDistance(frame.eye, lo, hi), settings.referenceDistanceMm);
+    const float s = irradianceMapScale(nearestBoxCornerDistance(frame.eye, frame.boundsLo, frame.boundsHi),
+                                       settings.referenceDistanceMm);
     m_size = irradianceMapSize(s, m_maxSize);
   }
   m_scale = float(m_size) / float(m_maxSize);
@@ -125,7 +121,8 @@ void IrradianceMap::begin(GLuint program, const IrradianceFrame& frame, const Ir
   g.Uniform1i(at("u_cull"), settings.cull ? 1 : 0);
   g.Uniform1f(at("u_cullCosine"), kCullCosine);
   g.Uniform1f(at("u_mapSize"), float(m_size));
-  g.Uniform3f(at("u_offset"), frame.offsetMm.x, frame.offsetMm.y, frame.offsetMm.z);
+  g.UniformMatrix4fv(at("u_model"), 1, GL_FALSE, frame.model.data());
+  g.UniformMatrix3fv(at("u_normalMatrix"), 1, GL_FALSE, frame.normalMatrix.data());
   g.Uniform3f(at("u_ambient"), frame.ambient.x, frame.ambient.y, frame.ambient.z);
 }
 

@@ -14,6 +14,7 @@
 #include "tissue/core/result.h"
 #include "tissue/gl/objects.h"
 #include "tissue/gl/shader_library.h"
+#include "tissue/render/scene.h"
 #include "tissue/render/texture_space_math.h"
 
 namespace tissue::render {
@@ -27,16 +28,20 @@ struct IrradianceMapSettings {
   float referenceDistanceMm = 0.0f;  ///< d_ref of eq. 3, mm
 };
 
-/// The view and light of one frame, and the object's bounds (for d of eq. 3).
+/// The view and light of one frame, and the object's transform and bounds (for d of eq. 3).
 struct IrradianceFrame {
   Mat4 view{};                ///< world (mm) to eye (mm), column-major
   Mat4 projection{};          ///< eye to clip, column-major
   Float3 eye;                 ///< camera position, mm
-  Float3 boundsLo, boundsHi;  ///< the object's world bounding box, mm
-  Float3 offsetMm;            ///< translation added to the mesh's positions (instances), mm
-  Float3 lightPosition;       ///< mm
-  Float3 lightRadiance;       ///< linear RGB
-  Float3 ambient;             ///< linear RGB irradiance added everywhere
+  Float3 boundsLo, boundsHi;  ///< the object's world bounding box, mm (through `model`)
+  /// Object (mm) to world (mm), column-major (SceneObject::model; it supersedes the former
+  /// instance offset: an instance's translation is its model's).
+  Mat4 model = kIdentityModel;
+  /// (M3^-1)^T of `model`, column-major 3x3: normals.
+  std::array<float, 9> normalMatrix{1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 1.0f};
+  Float3 lightPosition;  ///< mm
+  Float3 lightRadiance;  ///< linear RGB
+  Float3 ambient;        ///< linear RGB irradiance added everywhere
 };
 
 /// The pipeline's light for the irradiance pass: every light of the frame through

@@ -133,8 +133,9 @@ Result<int> ParallaxMethod::lightmap(const FrameContext& frame, const ObjectDraw
     f.projection = toMat4(glm::perspective(glm::radians(c.verticalFovDeg),
                                            float(frame.width) / float(frame.height), c.nearMm, c.farMm));
     f.eye = c.eye;
-    f.boundsLo = object.mesh->lo(), f.boundsHi = object.mesh->hi();
-    f.offsetMm = {};
+    f.boundsLo = fromGlm(object.lo), f.boundsHi = fromGlm(object.hi);
+    f.model = toArray(object.transform.model);
+    f.normalMatrix = toArray(object.transform.normalMatrix);
     const IrradianceMapSettings settings{s.lightmap.cull, s.lightmap.clip, false, 1.0f, 0.0f};
     const glm::vec3 centre = 0.5f * (toGlm(f.boundsLo) + toGlm(f.boundsHi));
     for (int i = 0; i < std::max(frame.lights.count, 1); ++i) {

@@ -51,10 +51,12 @@ Result<void> checkSettings(const TextureSpaceSettings& s, float objectId) {
 }
 
 // d_ref of eq. 3 (mm): given, or where one texel of the full map covers one pixel: a pixel
-// spans 2 d tan(fov / 2) / H mm at distance d.
-float referenceDistanceMm(const FrameContext& frame, const TextureSpaceSettings& s, const MeshBuffers& mesh) {
+// spans 2 d tan(fov / 2) / H mm at distance d. The density measured at upload is per object-space
+// mm; the model's scale s makes it 1 / s as many per world mm.
+float referenceDistanceMm(const FrameContext& frame, const TextureSpaceSettings& s, const ObjectDraw& d) {
   if (s.referenceDistanceMm > 0.0f) return s.referenceDistanceMm;
-  const float texelsPerMm = s.texelsPerMm > 0.0f ? s.texelsPerMm : mesh.uvDensity() * float(s.mapSize);
+  const float texelsPerMm =
+      s.texelsPerMm > 0.0f ? s.texelsPerMm : d.mesh->uvDensity() * float(s.mapSize) / d.transform.scale;
   const float tanHalf = std::tan(glm::radians(frame.scene.camera.verticalFovDeg) * 0.5f);
   return texelsPerMm > 0.0f ? float(frame.height) / (2.0f * tanHalf * texelsPerMm) : 0.0f;
 }
@@ -103,10 +105,12 @@ Result<void> TextureSpaceMethod::draw(const FrameContext& frame, std::span<const
     m_last = &maps;
     const TextureSpaceDiffusionSettings passes{
         s.gaussians,
-        {s.cull, s.clip, s.depthSize, s.clipD, referenceDistanceMm(frame, s, *d.mesh)},
+        {s.cull, s.clip, s.depthSize, s.clipD, referenceDistanceMm(frame, s, d)},
         s.blurHalfTaps};
     IrradianceFrame object = view;
-    object.boundsLo = d.mesh->lo(), object.boundsHi = d.mesh->hi();
+    object.boundsLo = fromGlm(d.lo), object.boundsHi = fromGlm(d.hi);
+    object.model = toArray(d.transform.model);
+    object.normalMatrix = toArray(d.transform.normalMatrix);
     object.ambient = d.object->material.ambient;
     const IrradianceLighting lighting{&frame.lights,         frame.shadowMaps,   d.baseColor,
                                       d.normalMap,           s.albedoPreScatter, s.transmittance,
