@@ -147,6 +147,10 @@ TEST(Scene, BadInputNamesTheFileOrTheArgument) {
   auto organ = scene.addOrgan(liver(false));
   ASSERT_TRUE(organ.ok()) << organ.error().message;
   EXPECT_FALSE(scene.setTransform(*organ, singular).ok());
+  const Mat4 mirrored{-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};  // flips the winding
+  EXPECT_FALSE(scene.setTransform(*organ, mirrored).ok());
+  const Mat4 projective{1, 0, 0, 0.5f, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  EXPECT_FALSE(scene.setTransform(*organ, projective).ok());
   EXPECT_FALSE(scene.renderImage(0, 10).ok());
 }
 

@@ -20,6 +20,15 @@ float uniformScaleOf(const Mat4& m) {
   return length({m[0], m[1], m[2]});
 }
 
+/// Model matrices the renderer and the simulation both take: affine, finite, not mirrored
+/// (mirroring flips the winding and the tangents' handedness).
+Result<void> checkModel(const Mat4& m) {
+  if (!isAffineInvertible(m) || !(determinant3(m) > 0.0f))
+    return Error{"model matrix: must be affine (last row 0 0 0 1), finite and invertible without mirroring "
+                 "(det > 0); column-major, mm"};
+  return {};
+}
+
 sim::Vec3d toVec3d(Float3 v) {
   return {double(v.x), double(v.y), double(v.z)};
 }
@@ -90,11 +99,14 @@ struct Scene::Impl {
     scene.objects.clear();
     for (const Organ& o : organs) {
       render::SceneObject object = organObject(o.loop ? o.loop->meshHandle() : o.mesh, o.textures, o.method);
-      // MODEL object.model = o.model;
+      object.model = o.model;
+      // The ray march's texture units per mm are world values (render::SceneObject::model).
+      if (auto* march = std::get_if<render::RayMarchSettings>(&object.method))
+        march->uvPerMm /= uniformScaleOf(o.model);
       scene.objects.push_back(std::move(object));
       if (o.loop && instrumentVisible)
         if (auto tool = o.loop->instrumentObject()) {
-          // MODEL tool->model = o.model;
+          tool->model = o.model;  // the tool moves in the organ's frame
           scene.objects.push_back(*tool);
         }
     }
@@ -132,8 +144,7 @@ Result<Scene> Scene::create(const gl::GetProcAddressFn& getProcAddress, const Sc
 
 Result<OrganId> Scene::addOrgan(const OrganDesc& desc) {
   Impl& s = *m_impl;
-  if (!isAffineInvertible(desc.model))
-    return Error{"organ " + desc.mesh.string() + ": the model matrix must be affine and invertible"};
+  if (auto ok = checkModel(desc.model); !ok) return Error{"organ " + desc.mesh.string() + ": " + ok.error().message};
   if (auto current = s.makeCurrent(); !current) return current.error();
   Impl::Organ organ;
   organ.model = desc.model;

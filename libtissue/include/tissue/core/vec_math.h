@@ -89,14 +89,17 @@ inline Float3 transformDirection(const Mat4& m, Float3 d) {
   return {m[0] * d.x + m[4] * d.y + m[8] * d.z, m[1] * d.x + m[5] * d.y + m[9] * d.z,
           m[2] * d.x + m[6] * d.y + m[10] * d.z};
 }
+/// The determinant of the upper 3x3 part (its volume scale; < 0 mirrors).
+inline float determinant3(const Mat4& m) {
+  return m[0] * (m[5] * m[10] - m[9] * m[6]) - m[4] * (m[1] * m[10] - m[9] * m[2]) +
+         m[8] * (m[1] * m[6] - m[5] * m[2]);
+}
 /// Whether the bottom row is (0, 0, 0, 1), every entry is finite and the 3x3 part invertible.
 inline bool isAffineInvertible(const Mat4& m) {
   for (float v : m)
     if (!std::isfinite(v)) return false;
   if (m[3] != 0.0f || m[7] != 0.0f || m[11] != 0.0f || m[15] != 1.0f) return false;
-  const float det = m[0] * (m[5] * m[10] - m[9] * m[6]) - m[4] * (m[1] * m[10] - m[9] * m[2]) +
-                    m[8] * (m[1] * m[6] - m[5] * m[2]);
-  return std::abs(det) > 1e-12f;
+  return std::abs(determinant3(m)) > 1e-12f;
 }
 /// The inverse of an affine `m` (isAffineInvertible(m) must hold).
 inline Mat4 inverseAffine(const Mat4& m) {
