@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <utility>
 
-#include "sss_material.h"
+#include "organ_data.h"
 #include "tissue/core/stopwatch.h"
 
 namespace tissue::sim_app {

@@ -8,7 +8,7 @@
 
 #include "command.h"
 #include "deformations.h"
-#include "material_file.h"
+#include "organ_data.h"
 #include "output.h"
 #include "tissue/core/statistics.h"
 #include "tissue/core/stopwatch.h"
@@ -121,9 +121,9 @@ int runScenario(const BenchOptions& o, const GlobalOptions& global) {
     return fail("refit-bench", "--max-normal-error must be >= 0 rad (0: exact); give e.g. 1e-4");
   auto loaded = mesh::loadMesh(parsed->mesh, {.requireUvs = true, .scaleToMm = float(parsed->meshScaleToMm)});
   if (!loaded) return fail("refit-bench", loaded.error().message);
-  auto material = readLayeredMaterial(materialFileFor(parsed->mesh));
-  const mesh::PlaneFitSettings settings{.sigma_t = material ? material->firstLayerMinSigmaT : o.sigma_t,
-                                        .epsilon = o.epsilon};
+  auto material = readDataMaterial(materialFileFor(parsed->mesh));
+  const mesh::PlaneFitSettings settings{
+      .sigma_t = material ? scene::firstLayerMinSigmaT(*material) : o.sigma_t, .epsilon = o.epsilon};
   auto exact = mesh::DeformableSurface::create(*loaded, settings, 0, {.maxNormalErrorRad = 0.0});
   if (!exact) return fail("refit-bench", exact.error().message);
   auto tolerant =

@@ -4,8 +4,8 @@
 // dipole profile, tissue::reference). Methods add rows through kMethods below.
 #include <filesystem>
 
+#include "../organ_data.h"
 #include "../sss_bench.h"
-#include "../sss_material.h"
 #include "command.h"
 #include "gl_environment.h"
 #include "output.h"
