@@ -167,13 +167,8 @@ int run(RenderOptions o, const GlobalOptions& global) {
     *handle = *texture;
   }
   // Step 3: frame the bounding box, light it, render (a first frame allocates the target).
-  Float3 lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
-            std::numeric_limits<float>::max()};
-  Float3 hi{-lo.x, -lo.y, -lo.z};
-  for (const auto& p : m.positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
+  const Bounds3 box = boundsOf(m.positions);
+  const Float3 lo = box.lo, hi = box.hi;
   render::Scene scene;
   scene.camera = render::frameBoundingBox(lo, hi, static_cast<float>(o.width) / static_cast<float>(o.height));
   scene.lights = {keyLight(scene.camera)};
