@@ -26,7 +26,7 @@ void methodSwitches(const PanelView& v, PanelActions& a) {
 
 /// The settings of the method shown; a change returns new choices.
 void methodSettings(const PanelView& v, PanelActions& a) {
-  MethodChoices c = v.choices;
+  scene::MethodChoices c = v.choices;
   bool changed = false;
   const std::string& name = v.methods[v.method];
   if (name == "separable") {

@@ -12,13 +12,16 @@
 #include <string>
 #include <vector>
 
-#include "organ_methods.h"
 #include "tissue/core/result.h"
 #include "tissue/scene/organ_loop.h"
+#include "tissue/scene/organ_methods.h"
 
 struct GLFWwindow;
 
 namespace tissue::viewer {
+
+/// The separable kernel models the panel offers (scene::MethodChoices::kernel).
+inline const std::vector<std::string> kKernelModels{"preintegrated", "svd", "deon", "jimenez", "guided"};
 
 /// What the panel shows this frame.
 struct PanelView {
@@ -33,7 +36,7 @@ struct PanelView {
   float toolDepthMm = 0.0f;          ///< mm past the picked point
   std::vector<std::string> methods;  ///< names offered
   std::size_t method = 0;            ///< index of the method shown
-  MethodChoices choices;             ///< their settings
+  scene::MethodChoices choices;      ///< their settings
   std::string methodError;           ///< why the last change of settings failed (empty: none)
   std::vector<std::string> tissue;   ///< lines describing the scenario's springs, damping, mass
   std::string mode;                  ///< "interactive", "scripted" or "replay"
@@ -44,9 +47,9 @@ struct PanelView {
 
 /// What the user did in the panel.
 struct PanelActions {
-  std::optional<std::size_t> method;     ///< switch to this method
-  std::optional<MethodChoices> choices;  ///< rebuild the methods with these settings
-  bool reset = false;                    ///< rebuild the loop from the scenario
+  std::optional<std::size_t> method;            ///< switch to this method
+  std::optional<scene::MethodChoices> choices;  ///< rebuild the methods with these settings
+  bool reset = false;                           ///< rebuild the loop from the scenario
   bool toggleGrasp = false;
   bool toggleRecord = false;
 };

@@ -14,7 +14,6 @@
 #include "glfw_window.h"
 #include "instrument_control.h"
 #include "orbit_camera.h"
-#include "organ_methods.h"
 #include "panel.h"
 #include "ray_pick.h"
 #include "tissue/render/renderer.h"
@@ -118,7 +117,7 @@ PanelView panelView(const Viewer& v, const FrameTimer& timer) {
   p.method = v.method;
   p.choices = v.choices;
   p.methodError = v.methodError;
-  p.tissue = tissueLines(v.organ.scenario);
+  p.tissue = tissueLines(v.scenario);
   p.mode = v.replay ? "replay" : v.scripted ? "scripted" : "interactive";
   p.frame = v.loop->frame();
   p.recording = v.recorder.has_value();
@@ -215,9 +214,8 @@ Result<void> runViewer(const ViewerOptions& options) {
     session = std::move(*loaded);
     scenarioFile = session->scenario;  // the session's own scenario
   }
-  auto organ = loadOrganAssets(scenarioFile, options.folders);
-  if (!organ) return organ.error();
-  Viewer v(std::move(*organ));
+  Viewer v;
+  if (auto ok = loadOrgan(v, scenarioFile, options.folders); !ok) return ok;
   v.scripted = options.pokeScript;
   if (auto ok = createLoop(v); !ok) return ok;
   if (session) {
@@ -238,7 +236,7 @@ Result<void> runViewer(const ViewerOptions& options) {
   auto panel = Panel::create(v.window->handle());
   if (!panel) return panel.error();
   v.panel = std::move(*panel);
-  v.orbit.emplace(v.boxLo, v.boxHi, float(options.width) / float(options.height));
+  v.orbit.emplace(v.box.lo, v.box.hi, float(options.width) / float(options.height));
   v.scene.camera = v.orbit->camera();
   v.recordFile =
       options.record.empty() ? std::filesystem::path("tissue-viewer-session.json") : options.record;

@@ -9,10 +9,16 @@
 #include <filesystem>
 #include <string>
 
-#include "organ_assets.h"
 #include "tissue/core/result.h"
 
 namespace tissue::viewer {
+
+/// Where the project's data lives.
+struct DataFolders {
+  std::filesystem::path data;       ///< the source tree's data/ (meshes, materials, small textures)
+  std::filesystem::path generated;  ///< the build's data/ (1024 x 1024 textures of target tissue_data)
+  std::filesystem::path shared;     ///< ../shared (meshes a scenario may name)
+};
 
 /// What the command line asks for.
 struct ViewerOptions {

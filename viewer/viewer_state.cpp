@@ -2,36 +2,84 @@
 #include "viewer_state.h"
 
 #include <cstdio>
-#include <limits>
 
 #include "frame_timer.h"
 
 namespace tissue::viewer {
 namespace {
 
-/// Uploads `image` when present; none otherwise.
-Result<render::TextureHandle> upload(render::Renderer& renderer, const std::optional<Image8>& image,
-                                     render::TextureEncoding encoding = render::TextureEncoding::Srgb) {
-  if (!image) return render::TextureHandle{};
-  return renderer.createTexture(*image, encoding);
-}
-
 /// The organ and the instrument as the scene's objects (after attach).
-void placeObjects(Viewer& v, render::TextureHandle baseColor) {
-  render::SceneObject organ;
-  organ.mesh = v.loop->meshHandle();
-  organ.baseColor = baseColor;
-  v.scene.objects = {organ};
+void placeObjects(Viewer& v) {
+  v.scene.objects = {scene::organObject(v.loop->meshHandle(), v.textures, render::LitSettings{})};
   if (auto tool = v.loop->instrumentObject()) v.scene.objects.push_back(*tool);
 }
 
+/// Every method the organ offers, with `choices`, Lit first.
+Result<std::vector<render::MethodSettings>> organMethods(const Viewer& v,
+                                                         const scene::MethodChoices& choices) {
+  std::vector<render::MethodSettings> methods;
+  for (render::ShadingMethod m : scene::offeredMethods(v.organ)) {
+    auto settings = scene::organMethod(m, v.organ, v.textures, choices);
+    if (!settings) return settings.error();
+    methods.push_back(std::move(*settings));
+  }
+  return methods;
+}
+
 }  // namespace
+
+scene::MethodChoices viewerChoices() {
+  scene::MethodChoices c;
+  c.adaptive = false;  // the panel's samples slider sets the count
+  return c;
+}
+
+Result<void> loadOrgan(Viewer& v, const std::filesystem::path& scenarioFile, const DataFolders& folders) {
+  if (!std::filesystem::exists(scenarioFile))
+    return Error{scenarioFile.string() +
+                 ": no such scenario file; give --scenario FILE (data/scenarios/*.json)"};
+  auto scenario = scenario::loadScenario(scenarioFile, {.sharedMeshesDir = folders.shared / "meshes"});
+  if (!scenario) return scenario.error();
+  if (!scenario->instrument)
+    return Error{scenarioFile.string() +
+                 ": the scenario has no instrument; the viewer pokes with it (key "
+                 "\"instrument\", docs/SCENARIOS.md)"};
+  scene::OrganSource source;
+  source.mesh = scenario->mesh;
+  source.meshScaleToMm = float(scenario->meshScaleToMm);
+  // A mesh from outside the project has no material file: the default organ material.
+  if (const auto file = folders.data / "materials" / (scenario->mesh.stem().string() + ".json");
+      std::filesystem::exists(file))
+    source.material = file;
+  source.materialOptions.textureRoots = {folders.generated, folders.data};
+  auto organ = scene::loadOrganAssets(source);
+  if (!organ) return organ.error();
+  v.scenario = std::move(*scenario);
+  v.organ = std::move(*organ);
+  return {};
+}
+
+std::string methodName(const render::MethodSettings& method) {
+  return std::string(render::shadingMethodName(render::shadingMethod(method)));
+}
+
+Result<std::size_t> findMethod(const std::vector<render::MethodSettings>& methods, const std::string& name) {
+  std::string offered;
+  for (std::size_t i = 0; i < methods.size(); ++i) {
+    const std::string n = methodName(methods[i]);
+    if (n == name) return i;
+    offered += (offered.empty() ? "" : ", ") + n;
+  }
+  return Error{"method " + name + ": this organ offers " + offered +
+               " (texture-space needs unique UVs, ray-march a material naming textures.subsurface, "
+               "parallax one naming textures.inner_base; docs/DATA.md)"};
+}
 
 Result<void> createLoop(Viewer& v) {
   scene::OrganLoopConfig config;
   config.planes = v.organ.planes;
   config.uploadPlanes = true;  // the ray-march method reads them (the others ignore them)
-  auto loop = scene::OrganLoop::create(v.organ.scenario, v.organ.mesh, config);
+  auto loop = scene::OrganLoop::create(v.scenario, v.organ.mesh, config);
   if (!loop) return loop.error();
   if (v.loop) v.loop->detach();
   v.loop.emplace(std::move(*loop));
@@ -39,15 +87,7 @@ Result<void> createLoop(Viewer& v) {
   const auto& p = tool->pose().position;
   v.tool.emplace(Float3{float(p.x), float(p.y), float(p.z)}, float(tool->config().shape.radius));
   v.grasping = false;
-  const auto rest = v.loop->surface().geometricRestPositions();
-  Float3 lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
-            std::numeric_limits<float>::max()};
-  Float3 hi{-lo.x, -lo.y, -lo.z};
-  for (const Float3& q : rest) {
-    lo = {std::min(lo.x, q.x), std::min(lo.y, q.y), std::min(lo.z, q.z)};
-    hi = {std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z)};
-  }
-  v.boxLo = lo, v.boxHi = hi;
+  v.box = boundsOf(v.loop->surface().geometricRestPositions());
   return {};
 }
 
@@ -58,30 +98,22 @@ Result<void> setUpRendering(Viewer& v, const std::string& initialMethod) {
   if (!renderer) return renderer.error();
   v.renderer.emplace(std::move(*renderer));
   if (auto attached = v.loop->attach(*v.renderer); !attached) return attached.error();
-  const OrganAssets& o = v.organ;
-  auto base = upload(*v.renderer, o.baseColor);
-  auto normal = upload(*v.renderer, o.normalMap);
-  auto inner = upload(*v.renderer, o.innerBase);
-  auto opacity = upload(*v.renderer, o.opacity);
-  auto map = upload(*v.renderer, o.rayMarch ? std::optional<Image8>(o.rayMarch->subsurfaceMap) : std::nullopt,
-                    render::TextureEncoding::LinearData);
-  for (const auto* r : {&base, &normal, &inner, &opacity, &map})
-    if (!*r) return r->error();
-  v.normalMap = *normal;
-  v.layers = {*inner, *opacity, *map};
-  auto methods = organMethods(o, v.layers, v.choices);
+  auto textures = scene::uploadOrganTextures(*v.renderer, v.organ);
+  if (!textures) return textures.error();
+  v.textures = *textures;
+  auto methods = organMethods(v, v.choices);
   if (!methods) return methods.error();
   v.methods = std::move(*methods);
   auto index = findMethod(v.methods, initialMethod);
   if (!index) return Error{"--" + index.error().message};
   v.method = *index;
-  placeObjects(v, *base);
+  placeObjects(v);
   applyMethod(v);
   return {};
 }
 
-Result<void> rebuildMethods(Viewer& v, const MethodChoices& choices) {
-  auto methods = organMethods(v.organ, v.layers, choices);
+Result<void> rebuildMethods(Viewer& v, const scene::MethodChoices& choices) {
+  auto methods = organMethods(v, choices);
   if (!methods) return methods.error();
   const std::string shown = methodName(v.methods[v.method]);
   v.methods = std::move(*methods);
@@ -94,7 +126,7 @@ Result<void> rebuildMethods(Viewer& v, const MethodChoices& choices) {
 void applyMethod(Viewer& v) {
   render::SceneObject& organ = v.scene.objects[0];
   organ.method = v.methods[v.method];
-  organ.normalMap = v.normalMapping ? v.normalMap : render::TextureHandle{};
+  organ.normalMap = v.normalMapping ? v.textures.normalMap : render::TextureHandle{};
   // The separable and texture-space transmission reads shadow maps; ray marching is its own
   // light transport (no shadow maps).
   const auto m = render::shadingMethod(organ.method);
@@ -105,13 +137,12 @@ void applyMethod(Viewer& v) {
 Result<void> resetLoop(Viewer& v) {
   if (v.recorder)
     if (auto ok = toggleRecording(v); !ok) return ok;
-  const render::TextureHandle base = v.scene.objects[0].baseColor;
   if (auto ok = createLoop(v); !ok) return ok;
   if (auto attached = v.loop->attach(*v.renderer); !attached) return attached.error();
-  placeObjects(v, base);
+  placeObjects(v);
   applyMethod(v);
   v.maxForceN = 0.0;
-  std::printf("tissue-viewer: reset: the loop restarts from %s\n", v.organ.scenario.file.string().c_str());
+  std::printf("tissue-viewer: reset: the loop restarts from %s\n", v.scenario.file.string().c_str());
   return {};
 }
 

@@ -5,6 +5,8 @@
 #include <numbers>
 #include <numeric>
 
+#include "tissue/core/vec_math.h"
+
 namespace tissue::sim_app {
 
 std::vector<std::uint32_t> applyPoke(std::span<const Float3> rest, std::span<const Float3> normals,
@@ -37,11 +39,8 @@ std::vector<std::uint32_t> applyPoke(std::span<const Float3> rest, std::span<con
 }
 
 void applyGlobalBend(std::span<const Float3> rest, float amplitudeMm, std::span<Float3> out) {
-  Float3 lo = rest[0], hi = rest[0];
-  for (const auto& p : rest) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
+  const Bounds3 box = boundsOf(rest);
+  const Float3 lo = box.lo, hi = box.hi;
   const float sx = std::max(hi.x - lo.x, 1e-6f), sy = std::max(hi.y - lo.y, 1e-6f);
   for (std::size_t i = 0; i < rest.size(); ++i) {
     const float u = (rest[i].x - lo.x) / sx, v = (rest[i].y - lo.y) / sy;

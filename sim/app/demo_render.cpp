@@ -2,19 +2,19 @@
 #include "gl_environment.h"
 
 #include <algorithm>
-#include <limits>
 #include <optional>
 
+#include "organ_data.h"
 #include "output.h"
 #include "pass_timings_json.h"
 #include "sss_bench.h"
-#include "sss_material.h"
 #include "tissue/context/headless_context.h"
 #include "tissue/core/image.h"
 #include "tissue/core/stopwatch.h"
-#include "tissue/mesh/uv_atlas.h"
+#include "tissue/core/vec_math.h"
 #include "tissue/reference/screen_convolution.h"
 #include "tissue/render/renderer.h"
+#include "tissue/scene/organ_methods.h"
 
 namespace tissue::sim_app {
 
@@ -30,6 +30,7 @@ struct DemoRenderer::Impl {
   // The loop's renderer on the same context: no MSAA and no GPU timers, so that a frame costs
   // what a trainee's frame would (4x MSAA of three float targets is llvmpipe's heaviest pass).
   std::optional<render::Renderer> loopRenderer;
+  scene::OrganTextures textures, loopTextures;  // the organ's, on each renderer
 };
 
 DemoRenderer::DemoRenderer(int width, int height) : m_impl(std::make_unique<Impl>()) {
@@ -43,19 +44,7 @@ DemoRenderer::~DemoRenderer() {
   m_impl->renderer.reset();
 }
 
-namespace {
-
-/// The texture `name` of mesh `stem`: the build-time 1024 version, else the committed small one.
-Result<Image8> loadTexture(const std::string& stem, const std::string& name) {
-  if (const auto path = findDataTexture(stem, name); !path.empty()) return readImage(path, 4);
-  return Error{"no texture '" + name + ".png' for mesh '" + stem + "' in " +
-               (generatedDataDir() / "textures").string() + " or " + (dataDir() / "textures").string() +
-               "; build the tissue_data target"};
-}
-
-}  // namespace
-
-Result<void> DemoRenderer::prepare(const mesh::DeformableSurface& surface, const LayeredMaterial& material) {
+Result<void> DemoRenderer::prepare(const mesh::DeformableSurface& surface, const scene::OrganAssets& organ) {
   auto& s = *m_impl;
   if (s.setupError) return *s.setupError;
   // Setup on first use: context, renderer, textures, a camera framing the rest shape.
@@ -71,28 +60,15 @@ Result<void> DemoRenderer::prepare(const mesh::DeformableSurface& surface, const
     auto r = render::Renderer::create(s.context->procAddressFunction(), settings);
     if (!r) return *(s.setupError = r.error());
     s.renderer.emplace(std::move(*r));
-    const auto stem = material.name;
-    render::SceneObject organ;
-    for (const auto& [name, slot] :
-         {std::pair{"base_color", &organ.baseColor}, std::pair{"normal_map", &organ.normalMap}}) {
-      auto tex = loadTexture(stem, name);
-      if (!tex) return *(s.setupError = tex.error());
-      auto handle = s.renderer->createTexture(*tex);
-      if (!handle) return *(s.setupError = handle.error());
-      *slot = *handle;
-    }
+    auto textures = scene::uploadOrganTextures(*s.renderer, organ);
+    if (!textures) return *(s.setupError = textures.error());
+    s.textures = *textures;
     auto mesh = s.renderer->createMesh(
         {surface.positions(), surface.normals(), surface.tangents(), surface.uvs(), surface.triangles(), {}});
     if (!mesh) return *(s.setupError = mesh.error());
-    organ.mesh = *mesh;
-    s.scene.objects = {organ};
-    Float3 lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
-              std::numeric_limits<float>::max()};
-    Float3 hi{-lo.x, -lo.y, -lo.z};
-    for (const auto& p : surface.geometricRestPositions()) {
-      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-    }
+    s.scene.objects = {scene::organObject(*mesh, s.textures, render::LitSettings{})};
+    const Bounds3 box = boundsOf(surface.geometricRestPositions());
+    const Float3 lo = box.lo, hi = box.hi;
     s.scene.camera = render::frameBoundingBox(lo, hi, float(s.width) / float(s.height));
     const Float3 c{(lo.x + hi.x) / 2, (lo.y + hi.y) / 2, (lo.z + hi.z) / 2};
     s.scene.lights[0].positionMm = {c.x + 150.0f, c.y + 200.0f, hi.z + 300.0f};
@@ -105,9 +81,9 @@ Result<void> DemoRenderer::makeCurrent() {
   return m_impl->context->makeCurrent();
 }
 
-Result<scene::RenderRequest> DemoRenderer::attachLoop(scene::OrganLoop& loop, const LayeredMaterial& material,
+Result<scene::RenderRequest> DemoRenderer::attachLoop(scene::OrganLoop& loop, const scene::OrganAssets& organ,
                                                       int width, int height, Image8* image) {
-  if (auto ok = prepare(loop.surface(), material); !ok) return ok.error();
+  if (auto ok = prepare(loop.surface(), organ); !ok) return ok.error();
   auto& s = *m_impl;
   render::RendererSettings settings;
   settings.samples = 0;
@@ -116,20 +92,17 @@ Result<scene::RenderRequest> DemoRenderer::attachLoop(scene::OrganLoop& loop, co
   auto r = render::Renderer::create(s.context->procAddressFunction(), settings);
   if (!r) return r.error();
   s.loopRenderer.emplace(std::move(*r));
+  auto textures = scene::uploadOrganTextures(*s.loopRenderer, organ);
+  if (!textures) return textures.error();
+  s.loopTextures = *textures;
   s.loopScene = s.scene;
-  auto& organ = s.loopScene->objects[0];
-  for (const auto& [name, slot] :
-       {std::pair{"base_color", &organ.baseColor}, std::pair{"normal_map", &organ.normalMap}}) {
-    auto tex = loadTexture(material.name, name);
-    if (!tex) return tex.error();
-    auto handle = s.loopRenderer->createTexture(*tex);
-    if (!handle) return handle.error();
-    *slot = *handle;
-  }
+  auto& object = s.loopScene->objects[0];
+  object.baseColor = s.loopTextures.baseColor;
+  object.normalMap = s.loopTextures.normalMap;
   auto handle = loop.attach(*s.loopRenderer);
   if (!handle) return handle.error();
-  organ.mesh = *handle;
-  organ.method = render::LitSettings{};
+  object.mesh = *handle;
+  object.method = render::LitSettings{};
   if (auto tool = loop.instrumentObject()) s.loopScene->objects.push_back(*tool);
   scene::RenderRequest request;
   request.scene = &*s.loopScene;
@@ -139,10 +112,10 @@ Result<scene::RenderRequest> DemoRenderer::attachLoop(scene::OrganLoop& loop, co
   return request;
 }
 
-Result<void> DemoRenderer::render(const mesh::DeformableSurface& surface, const LayeredMaterial& material,
+Result<void> DemoRenderer::render(const mesh::DeformableSurface& surface, const scene::OrganAssets& organ,
                                   const std::filesystem::path& png) {
   auto& s = *m_impl;
-  if (auto ok = prepare(surface, material); !ok) return ok.error();
+  if (auto ok = prepare(surface, organ); !ok) return ok.error();
   // Upload: the whole mesh once (above), then only what deforms.
   auto up = s.renderer->updateMesh(s.scene.objects[0].mesh,
                                    {0, surface.positions(), surface.normals(), surface.tangents(), {}});
@@ -181,31 +154,36 @@ void addReferenceError(render::Renderer& renderer, const render::FloatImage& dif
 }  // namespace
 
 nlohmann::json DemoRenderer::renderSubsurface(const mesh::DeformableSurface& surface,
-                                              const LayeredMaterial& material,
+                                              const scene::OrganAssets& organ,
                                               const std::filesystem::path& png, bool textureSpace) {
   auto& s = *m_impl;
   auto fail = [](const std::string& why) { return nlohmann::json{{"skipped", why}}; };
-  // Step 1: both methods' settings from the material's first layer (its dipole profile).
-  auto optical = loadDataMaterial(material.name);
-  if (!optical) return fail(optical.error().message);
-  auto separable = makeSeparableMaterial(*optical, "preintegrated", 17);
+  // Step 1: both methods' settings from the material's first layer (its dipole profile), as
+  // every app gets them (scene::organMethod, the main job's choices); the kernel's truth, the
+  // reference's profile, from the same model.
+  if (auto ok = prepare(surface, organ); !ok) return fail(ok.error().message);
+  const scene::MethodChoices choices;
+  auto separable = scene::organMethod(render::ShadingMethod::Separable, organ, s.textures, choices);
   if (!separable) return fail(separable.error().message);
-  auto tsd = makeTextureSpaceSettings(*optical, 6);
-  if (!tsd) return fail(tsd.error().message);
-  if (textureSpace && !mesh::hasUsableUvs(surface.uvs(), surface.triangles(), surface.positions().size()))
-    return fail(
-        "texture-space diffusion needs unique UVs, and the organ's UVs overlap (mesh::computeUvAtlas makes "
-        "unique ones)");
+  auto truth = makeSeparableMaterial(scene::opticalMaterial(organ.material), choices.kernel, choices.taps,
+                                     choices.rank);
+  if (!truth) return fail(truth.error().message);
+  std::optional<render::MethodSettings> tsd;
+  if (textureSpace) {
+    auto settings = scene::organMethod(render::ShadingMethod::TextureSpace, organ, s.textures, choices);
+    if (!settings) return fail(settings.error().message);
+    tsd = std::move(*settings);
+  }
   // Step 2: the organ as it is now, separable, lit by a shadow-casting lamp (shadows and
   // transmission); its pre-blur diffuse is the reference's input for both methods.
-  if (auto lit = render(surface, material, png); !lit) return fail(lit.error().message);
-  s.scene.objects[0].method = separable->settings;
+  if (auto lit = render(surface, organ, png); !lit) return fail(lit.error().message);
+  s.scene.objects[0].method = *separable;
   s.scene.lights[0].castsShadows = true;
   auto image = s.renderer->renderImage(s.scene, s.width, s.height);
   auto diffuse = s.renderer->readFrame(render::FrameView::Diffuse);
   auto position = s.renderer->readFrame(render::FrameView::Position);
   // Step 3: the same object switched to texture-space diffusion at run time.
-  if (image && textureSpace) {
+  if (image && tsd) {
     s.scene.objects[0].method = *tsd;
     image = s.renderer->renderImage(s.scene, s.width, s.height);
   }
@@ -214,41 +192,33 @@ nlohmann::json DemoRenderer::renderSubsurface(const mesh::DeformableSurface& sur
   if (!image) return fail(image.error().message);
   if (auto w = writePng(png, *image); !w) return fail(w.error().message);
   nlohmann::json j{{"image", png.filename().string()},
-                   {"material", optical->name},
+                   {"material", organ.material.name},
                    {"passes", passTimingsJson(s.renderer->lastTimings())},
                    {"total_cpu_ms", s.renderer->lastTimings().totalCpuMs}};
-  if (textureSpace)
-    j["gaussians"] = tsd->gaussians.size();
+  if (tsd)
+    j["gaussians"] = std::get<render::TextureSpaceSettings>(*tsd).gaussians.size();
   else
-    j["kernel"] = separable->kernelName;
+    j["kernel"] = truth->kernelName;
   // Step 4: the subsurface diffuse against the CPU reference on this frame.
-  if (diffuse && position) addReferenceError(*s.renderer, *diffuse, *position, separable->truth, j);
+  if (diffuse && position) addReferenceError(*s.renderer, *diffuse, *position, truth->truth, j);
   return j;
 }
 
 nlohmann::json DemoRenderer::renderParallax(const mesh::DeformableSurface& surface,
-                                            const LayeredMaterial& material,
+                                            const scene::OrganAssets& organ,
                                             const std::filesystem::path& png) {
   auto& s = *m_impl;
   auto fail = [](const std::string& why) { return nlohmann::json{{"skipped", why}}; };
-  // Step 1: the organ as it is now (uploads the deformation), then its inner layer's textures.
-  if (auto lit = render(surface, material, png); !lit) return fail(lit.error().message);
-  render::ParallaxSettings settings;
-  settings.layers = {render::ParallaxLayer{{}, 1.5f, 1.0f}};
-  for (auto [name, handle] :
-       {std::pair{"opacity", &settings.opacityMap}, std::pair{"inner_base", &settings.layers[0].base}}) {
-    auto tex = loadTexture(material.name, name);
-    if (!tex) return fail(tex.error().message);
-    auto texture = s.renderer->createTexture(*tex);
-    if (!texture) return fail(texture.error().message);
-    *handle = *texture;
-  }
-  // Step 2: the same object switched to parallax for one frame, then back (the textures go).
-  s.scene.objects[0].method = settings;
+  // Step 1: the organ as it is now (uploads the deformation), then the parallax settings of its
+  // inner layer (uploaded with the organ's textures).
+  if (auto lit = render(surface, organ, png); !lit) return fail(lit.error().message);
+  auto method = scene::organMethod(render::ShadingMethod::Parallax, organ, s.textures);
+  if (!method) return fail(method.error().message);
+  const auto& settings = std::get<render::ParallaxSettings>(*method);
+  // Step 2: the same object switched to parallax for one frame, then back.
+  s.scene.objects[0].method = *method;
   auto image = s.renderer->renderImage(s.scene, s.width, s.height);
   s.scene.objects[0].method = render::LitSettings{};
-  s.renderer->destroyTexture(settings.opacityMap);
-  s.renderer->destroyTexture(settings.layers[0].base);
   if (!image) return fail(image.error().message);
   if (auto w = writePng(png, *image); !w) return fail(w.error().message);
   return {{"image", png.filename().string()},

@@ -9,7 +9,7 @@
 
 #include "demo_render.h"
 #include "loop_setup.h"
-#include "material_file.h"
+#include "organ_data.h"
 #include "output.h"
 #include "raymarch_scene.h"
 #include "tissue/core/atomic_file.h"
@@ -103,7 +103,7 @@ Result<void> writeInspection(const mesh::DeformableSurface& surface, const std::
 /// The organ to shade, its material, and the scenario that moves it.
 struct DemoSetup {
   std::filesystem::path meshPath;
-  LayeredMaterial material;
+  scene::OrganAssets organ;  ///< mesh, material file, textures (scene::loadOrganAssets)
   mesh::PlaneFitSettings planeSettings;
   std::optional<mesh::DeformableSurface> surface;  ///< for the snapshots rendered after the loop
   std::optional<scene::OrganLoop> loop;            ///< the per-frame loop (its own surface)
@@ -118,12 +118,12 @@ Result<DemoSetup> setUp(const DemoOptions& o) {
   if (o.frames > 0) organ->scenario.frames = o.frames;
   DemoSetup d;
   d.meshPath = organ->scenario.mesh;
-  d.material = std::move(organ->material);
-  d.planeSettings = organ->planes;
-  auto loop = scene::OrganLoop::create(organ->scenario, organ->mesh, {.planes = d.planeSettings});
+  d.organ = std::move(organ->assets);
+  d.planeSettings = d.organ.planes;
+  auto loop = scene::OrganLoop::create(organ->scenario, d.organ.mesh, {.planes = d.planeSettings});
   if (!loop) return loop.error();
   d.loop.emplace(std::move(*loop));
-  auto surface = mesh::DeformableSurface::create(std::move(organ->mesh), d.planeSettings);
+  auto surface = mesh::DeformableSurface::create(d.organ.mesh, d.planeSettings);
   if (!surface) return surface.error();
   d.surface.emplace(std::move(*surface));
   return d;
@@ -156,7 +156,7 @@ void renderSnapshot(DemoRenderer& renderer, DemoSetup& d, std::span<const Float3
                     const std::filesystem::path& png, std::vector<std::string>& images,
                     nlohmann::json& report) {
   d.surface->update(positions);
-  if (auto img = renderer.render(*d.surface, d.material, png); img.ok())
+  if (auto img = renderer.render(*d.surface, d.organ, png); img.ok())
     images.push_back(png.filename().string());
   else
     report["render_skipped"] = img.error().message;
@@ -182,7 +182,7 @@ Result<LoopResult> runFrames(DemoSetup& d, DemoRenderer& renderer, const DemoOpt
   LoopResult r;
   Image8 image;
   std::optional<scene::RenderRequest> request;
-  if (auto attached = renderer.attachLoop(*d.loop, d.material, loopWidth, loopHeight, &image); attached.ok())
+  if (auto attached = renderer.attachLoop(*d.loop, d.organ, loopWidth, loopHeight, &image); attached.ok())
     request = *attached;
   else
     report["render_skipped"] = attached.error().message;  // simulate and update the mesh all the same
@@ -312,11 +312,12 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
   // subsurface methods, one object switched between them at run time (ray marching on its own
   // renderer, with the planes), then side by side.
   report["render_separable"] =
-      renderer.renderSubsurface(*d.surface, d.material, o.outDir / "frame_poked_separable.png", false);
+      renderer.renderSubsurface(*d.surface, d.organ, o.outDir / "frame_poked_separable.png", false);
   report["texture_space"] =
-      renderer.renderSubsurface(*d.surface, d.material, o.outDir / "frame_poked_texture_space.png", true);
-  report["raymarch"] = renderPokedOrganRayMarch(*d.surface, d.material.name, o.outDir, o.width, o.height);
-  report["parallax"] = renderer.renderParallax(*d.surface, d.material, o.outDir / "frame_poked_parallax.png");
+      renderer.renderSubsurface(*d.surface, d.organ, o.outDir / "frame_poked_texture_space.png", true);
+  report["raymarch"] =
+      renderPokedOrganRayMarch(*d.surface, d.organ.material.name, o.outDir, o.width, o.height);
+  report["parallax"] = renderer.renderParallax(*d.surface, d.organ, o.outDir / "frame_poked_parallax.png");
   report["methods"] = writeMethodsMontage(o.outDir,
                                           {"frame_poked_separable.png", "frame_poked_texture_space.png",
                                            "frame_poked_raymarch.png", "frame_poked_parallax.png"},
@@ -328,7 +329,7 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
 
   report["mesh"] = d.meshPath.string();
   report["scenario"] = d.loop->run().scenario().file.string();
-  report["material"] = d.material.name;
+  report["material"] = d.organ.material.name;
   report["vertices"] = rest.size();
   report["triangles"] = d.surface->triangles().size();
   report["springs"] = d.loop->run().simulator().system().springs.size();

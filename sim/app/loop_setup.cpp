@@ -4,7 +4,6 @@
 
 #include "output.h"
 #include "tissue/core/statistics.h"
-#include "tissue/mesh/load_mesh.h"
 
 namespace tissue::sim_app {
 
@@ -12,15 +11,9 @@ Result<LoopOrgan> loadLoopOrgan(const std::filesystem::path& scenarioFile, const
   auto parsed = scenario::loadScenario(scenarioFile, {.sharedMeshesDir = sharedDir() / "meshes"});
   if (!parsed) return parsed.error();
   if (!meshOverride.empty()) parsed->mesh = meshOverride;
-  auto loaded = mesh::loadMesh(parsed->mesh, {.requireUvs = true, .scaleToMm = float(parsed->meshScaleToMm)});
-  if (!loaded) return loaded.error();
-  auto material = readLayeredMaterial(materialFileFor(parsed->mesh));
-  if (!material) return material.error();
-  const mesh::PlaneFitSettings planes{.sigma_t = material->firstLayerMinSigmaT, .epsilon = 0.01f};
-  LoopOrgan organ{.scenario = std::move(*parsed),
-                  .mesh = std::move(*loaded),
-                  .material = std::move(*material),
-                  .planes = planes};
+  auto assets = scene::loadOrganAssets(organSourceFor(parsed->mesh, float(parsed->meshScaleToMm)));
+  if (!assets) return assets.error();
+  LoopOrgan organ{.scenario = std::move(*parsed), .assets = std::move(*assets)};
   return organ;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// What `demo` and `replay` share around the library's loop (tissue::scene::OrganLoop): the
-/// organ a scenario moves (its mesh with UVs, material and plane settings), and the per-phase
+/// organ a scenario moves (the scene module's assets: mesh with UVs, material, textures, plane
+/// settings), and the per-phase
 /// figures of a run (median, p99, max ms) for the reports.
 
 #include <filesystem>
@@ -10,10 +11,8 @@
 #include <utility>
 #include <vector>
 
-#include "material_file.h"
+#include "organ_data.h"
 #include "tissue/core/result.h"
-#include "tissue/core/surface_mesh.h"
-#include "tissue/mesh/local_planes.h"
 #include "tissue/scenario/scenario.h"
 #include "tissue/scene/organ_loop.h"
 
@@ -22,13 +21,13 @@ namespace tissue::sim_app {
 /// A scenario and the organ it moves, ready for scene::OrganLoop::create.
 struct LoopOrgan {
   scenario::Scenario scenario;
-  SurfaceMesh mesh;  ///< the scenario's mesh (or the override), with UVs, mm
-  LayeredMaterial material;
-  mesh::PlaneFitSettings planes;  ///< radius from the outer layer's extinction (François eq. 8)
+  /// The scenario's mesh (or the override) with UVs (mm), data/materials/<mesh stem>.json, its
+  /// textures, and planes sized by the outer layer's extinction (François eq. 8).
+  scene::OrganAssets assets;
 };
 
-/// Loads `scenarioFile` (shared meshes from ../shared/meshes), its mesh (or `meshOverride`) with
-/// UVs, and data/materials/<mesh stem>.json.
+/// Loads `scenarioFile` (shared meshes from ../shared/meshes) and its organ (scene::loadOrganAssets
+/// of its mesh, or `meshOverride`, and data/materials/<mesh stem>.json).
 Result<LoopOrgan> loadLoopOrgan(const std::filesystem::path& scenarioFile,
                                 const std::string& meshOverride = {});
 

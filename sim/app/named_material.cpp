@@ -4,6 +4,7 @@
 #include <cctype>
 #include <filesystem>
 
+#include "organ_data.h"
 #include "output.h"
 
 namespace tissue::sim_app {
@@ -28,8 +29,11 @@ Result<optics::ScatteringMaterial> findNamedMaterial(const std::string& name) {
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(dataDir() / "materials", ec)) {
     if (entry.path().extension() != ".json") continue;
-    if (lowerCase(entry.path().stem().string()) == lowerCase(name))
-      return optics::loadTissueMaterial(entry.path());
+    if (lowerCase(entry.path().stem().string()) == lowerCase(name)) {
+      auto file = readDataMaterial(entry.path());
+      if (!file) return file.error();
+      return scene::opticalMaterial(*file);
+    }
     known += entry.path().stem().string() + ", ";
   }
   return Error{"unknown material '" + name + "'; known: " + known.substr(0, known.size() - 2) +

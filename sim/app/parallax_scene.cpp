@@ -2,6 +2,9 @@
 #include "parallax_scene.h"
 #include "gl_environment.h"
 
+#include <optional>
+
+#include "organ_data.h"
 #include "output.h"
 #include "tissue/context/headless_context.h"
 #include "tissue/core/image.h"
@@ -28,17 +31,23 @@ Result<ParallaxScene> loadParallaxScene(const std::filesystem::path& path, float
   object.mesh = *mesh;
   render::ParallaxSettings s = options.settings;
   s.layers = {render::ParallaxLayer{{}, options.layerDepthMm, 1.0f}};
-  // The project's layer textures live in the mesh's own UV space: with an atlas they do not fit.
-  const std::string stem = path.stem().string();
-  out.textured = !out.organ.atlas && !findDataTexture(stem, "inner_base").empty();
+  // The project's layer textures (named by data/materials/<stem>.json, read by the scene module)
+  // live in the mesh's own UV space: with an atlas they do not fit.
+  std::optional<scene::MaterialFile> material;
+  if (const auto file = materialFileFor(path); !out.organ.atlas && std::filesystem::exists(file)) {
+    auto read = readDataMaterial(file);
+    if (!read) return read.error();
+    material = std::move(*read);
+  }
+  out.textured = material && !material->textures.innerBase.empty();
   if (out.textured) {
-    for (auto [name, handle] :
-         {std::pair{"base_color", &object.baseColor}, std::pair{"normal_map", &object.normalMap},
-          std::pair{"opacity", &s.opacityMap}, std::pair{"inner_base", &s.layers[0].base}}) {
-      const auto file = findDataTexture(stem, name);
-      if (file.empty()) continue;
-      auto image = readImage(file, 4);
-      if (!image) return Error{file.string() + ": " + image.error().message};
+    const scene::MaterialTextures& t = material->textures;
+    for (auto [file, handle] :
+         {std::pair{&t.baseColor, &object.baseColor}, std::pair{&t.normalMap, &object.normalMap},
+          std::pair{&t.opacity, &s.opacityMap}, std::pair{&t.innerBase, &s.layers[0].base}}) {
+      if (file->empty()) continue;
+      auto image = readImage(*file, 4);
+      if (!image) return Error{file->string() + ": " + image.error().message};
       auto texture = out.renderer->createTexture(*image);
       if (!texture) return texture.error();
       *handle = *texture;

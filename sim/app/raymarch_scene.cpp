@@ -3,32 +3,50 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "deformations.h"
+#include "organ_data.h"
 #include "output.h"
 #include "tissue/context/headless_context.h"
+#include "tissue/core/vec_math.h"
 #include "tissue/mesh/load_mesh.h"
 #include "tissue/mesh/vertex_normals.h"
+#include "tissue/subsurface/reference_image.h"
 
 namespace tissue::sim_app {
 namespace {
 
-float minSigmaT(const subsurface::LayerCoefficients& l) {
-  return std::min({l.sigma_t.x, l.sigma_t.y, l.sigma_t.z});
+/// The layer stack of data/materials/<stem>.json with its subsurface map (scene::layerStack),
+/// and the texture units per mm of `s`.
+Result<materials::RayMarchMaterial> rayMarchMaterialFor(const mesh::DeformableSurface& s,
+                                                        const std::string& stem) {
+  auto file = readDataMaterial(dataDir() / "materials" / (stem + ".json"));
+  if (!file) return Error{file.error().message + " (ray marching needs a data/ mesh with a material file)"};
+  if (file->textures.subsurface.empty())
+    return Error{file->file.string() + ": ray marching needs textures.subsurface (docs/DATA.md)"};
+  materials::RayMarchMaterial m;
+  auto map = readImage(file->textures.subsurface, 4);
+  if (!map) return Error{"subsurface map " + file->textures.subsurface.string() + ": " + map.error().message};
+  m.subsurfaceMap = std::move(*map);
+  auto stack = scene::layerStack(*file, m.subsurfaceMap);
+  if (!stack) return stack.error();
+  m.stack = std::move(*stack);
+  m.uvPerMm = subsurface::uvPerMmOf(s.positions(), s.uvs(), s.triangles());
+  return m;
 }
 
 }  // namespace
 
 Result<RayMarchScene> loadRayMarchScene(const std::filesystem::path& meshFile, float aspect, bool closeUp) {
   const std::string stem = meshFile.stem().string();
-  auto stack = subsurface::loadLayerStack(dataDir() / "materials" / (stem + ".json"), dataDir());
-  if (!stack) return Error{stack.error().message + " (ray marching needs a data/ mesh with a material file)"};
+  auto material = readDataMaterial(dataDir() / "materials" / (stem + ".json"));
+  if (!material)
+    return Error{material.error().message + " (ray marching needs a data/ mesh with a material file)"};
   auto loaded = mesh::loadMesh(meshFile, {.requireUvs = true});
   if (!loaded) return loaded.error();
   // Plane neighbourhoods from the first layer's extinction (François eq. 8).
   mesh::PlaneFitSettings planes;
-  planes.sigma_t = minSigmaT(stack->layers[0]);
+  planes.sigma_t = scene::firstLayerMinSigmaT(*material);
   auto surface = mesh::DeformableSurface::create(std::move(*loaded), planes, 2);
   if (!surface) return surface.error();
   auto owned = std::make_unique<mesh::DeformableSurface>(std::move(*surface));
@@ -42,21 +60,14 @@ Result<RayMarchScene> rayMarchSceneFor(const mesh::DeformableSurface& s, const s
                                        float aspect, bool closeUp) {
   RayMarchScene scene;
   // The build-time 1024 map when there is one, else the committed 128 one.
-  auto material = materials::loadRayMarchMaterial(dataDir() / "materials" / (stem + ".json"), dataDir(),
-                                                  findDataTexture(stem, "subsurface"), s.positions(), s.uvs(),
-                                                  s.triangles());
+  auto material = rayMarchMaterialFor(s, stem);
   if (!material) return material.error();
   scene.material = std::move(*material);
   scene.surface = &s;
   scene.pokeSite = topVertex(s.geometricRestPositions());
   // Camera: the whole organ, or a close-up of the poke site seen from above and in front.
-  Float3 lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
-            std::numeric_limits<float>::max()};
-  Float3 hi{-lo.x, -lo.y, -lo.z};
-  for (const Float3& p : s.geometricRestPositions()) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
+  const Bounds3 box = boundsOf(s.geometricRestPositions());
+  Float3 lo = box.lo, hi = box.hi;
   const Float3 site = s.geometricRestPositions()[scene.pokeSite];
   if (closeUp) {
     lo = {site.x - 20.0f, site.y - 20.0f, site.z - 8.0f};

@@ -3,15 +3,15 @@
 #include <algorithm>
 #include <utility>
 
-#include "sss_material.h"
+#include "organ_data.h"
+#include "tissue/core/statistics.h"
 #include "tissue/core/stopwatch.h"
 
 namespace tissue::sim_app {
 namespace {
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
+double median(const std::vector<double>& v) {
+  return summarizeSamples(v).median;
 }
 
 }  // namespace

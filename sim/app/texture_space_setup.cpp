@@ -8,43 +8,36 @@
 #include <sstream>
 
 #include "output.h"
+#include "tissue/core/vec_math.h"
 #include "tissue/mesh/deformable_surface.h"
 #include "tissue/mesh/load_mesh.h"
 #include "tissue/mesh/tangent_frames.h"
-#include "tissue/mesh/uv_atlas.h"
 #include "tissue/mesh/vertex_normals.h"
 #include "tissue/optics/kernel_gaussians.h"
+#include "tissue/scene/organ_assets.h"
 
 namespace tissue::sim_app {
 namespace {
 
-/// Replaces the mesh's render vertices by the atlas's (positions gathered from the welded ones).
-SurfaceMesh applyAtlas(const std::vector<Float3>& positions, const mesh::UvAtlas& atlas) {
-  SurfaceMesh out;
-  for (std::uint32_t v : atlas.originalVertex)
-    out.positions.push_back(positions[v]);
-  out.uvs = atlas.uvs;
-  out.triangles = atlas.triangles;
-  out.geometricIndex = atlas.originalVertex;
-  out.geometricVertexCount = std::uint32_t(positions.size());
-  return out;
-}
-
 Result<TsdOrgan> loadOrgan(const std::filesystem::path& path, float scale, bool allowAtlas) {
-  auto loaded = mesh::loadMesh(path, {.requireUvs = false, .scaleToMm = scale});
-  if (!loaded) return loaded.error();
   TsdOrgan organ;
-  organ.mesh = std::move(*loaded);
-  SurfaceMesh& m = organ.mesh;
-  if (allowAtlas && (!m.hasUvs() || !mesh::hasUsableUvs(m.uvs, m.triangles, m.positions.size()))) {
-    // No usable UVs: the automatic atlas, computed once on the rest shape.
-    const std::vector<Float3> geo = mesh::geometricPositionsOf(m);
-    auto atlas = mesh::computeUvAtlas(geo, mesh::geometricTrianglesOf(m));
-    if (!atlas) return Error{path.string() + ": " + atlas.error().message};
-    organ.charts = atlas->chartCount;
-    m = applyAtlas(geo, *atlas);
-    organ.atlas = true;
+  if (allowAtlas) {
+    // The scene module's organ loading: the file's UVs when usable, else the automatic atlas,
+    // computed once on the rest shape (no material file: these commands bring their own profile).
+    scene::OrganSource source;
+    source.mesh = path;
+    source.meshScaleToMm = scale;
+    auto assets = scene::loadOrganAssets(source);
+    if (!assets) return assets.error();
+    organ.mesh = std::move(assets->mesh);
+    organ.atlas = assets->atlas;
+    organ.charts = assets->atlasCharts;
+  } else {
+    auto loaded = mesh::loadMesh(path, {.requireUvs = false, .scaleToMm = scale});
+    if (!loaded) return loaded.error();
+    organ.mesh = std::move(*loaded);
   }
+  SurfaceMesh& m = organ.mesh;
   // Normals per geometric vertex (smooth across seams), tangent frames from the UVs.
   const std::vector<Float3> geo = mesh::geometricPositionsOf(m);
   std::vector<Float3> geoNormals(m.geometricVertexCount);
@@ -56,11 +49,8 @@ Result<TsdOrgan> loadOrgan(const std::filesystem::path& path, float scale, bool 
                                m.geometricIndex);
     organ.uvDensity = render::uvDensity(m.positions, m.uvs, m.triangles);
   }
-  organ.lo = organ.hi = m.positions.front();
-  for (const Float3& p : m.positions) {
-    organ.lo = {std::min(organ.lo.x, p.x), std::min(organ.lo.y, p.y), std::min(organ.lo.z, p.z)};
-    organ.hi = {std::max(organ.hi.x, p.x), std::max(organ.hi.y, p.y), std::max(organ.hi.z, p.z)};
-  }
+  const Bounds3 box = boundsOf(m.positions);
+  organ.lo = box.lo, organ.hi = box.hi;
   return organ;
 }
 

@@ -14,6 +14,7 @@
 #include "tissue/mesh/vertex_normals.h"
 #include "tissue/optics/schlick_phase.h"
 #include "tissue/render/renderer.h"
+#include "tissue/scene/material_file.h"
 #include "tissue/subsurface/flat_slab.h"
 #include "tissue/subsurface/reference_image.h"
 
@@ -44,10 +45,12 @@ struct PatchScene {
 PatchScene loadPatch() {
   PatchScene p;
   const std::filesystem::path data = TISSUE_TEST_DATA_DIR;
-  auto stack = subsurface::loadLayerStack(data / "materials" / "patch.json", data);
+  auto file = scene::readMaterialFile(data / "materials" / "patch.json");
+  EXPECT_TRUE(file) << file.error().message;
+  p.map = *readImage(file->textures.subsurface, 4);
+  auto stack = scene::layerStack(*file, p.map);
   EXPECT_TRUE(stack) << stack.error().message;
   p.stack = *stack;
-  p.map = *readImage(data / "textures" / "patch" / "subsurface.png", 4);
   auto m = mesh::loadMesh(data / "meshes" / "patch.obj", {.requireUvs = true});
   EXPECT_TRUE(m) << m.error().message;
   mesh::PlaneFitSettings planes;

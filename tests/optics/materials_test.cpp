@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "tissue/optics/materials.h"
+#include "tissue/scene/material_file.h"
 
 namespace tissue::optics {
 namespace {
@@ -56,15 +57,20 @@ TEST(Materials, DeonColumnsSumToOneAndTheProfileIntegratesToOne) {
   }
 }
 
+// The project's material files are read by the scene module (the one reader); their first layer
+// is the optical material of the separable kernels.
 TEST(Materials, TissueMaterialUsesItsFirstLayer) {
-  auto liver = loadTissueMaterial(std::filesystem::path(TISSUE_TEST_DATA_DIR) / "materials" / "liver.json");
-  ASSERT_TRUE(liver.ok()) << liver.error().message;
-  EXPECT_EQ(liver->name, "liver");
-  EXPECT_DOUBLE_EQ(liver->sigmaS[2], 2.0);
-  EXPECT_DOUBLE_EQ(liver->sigmaA[0], 0.5);  // sigma_t 1.5 - sigma_s 1.0
-  EXPECT_DOUBLE_EQ(liver->g, 0.8);
-  EXPECT_DOUBLE_EQ(liver->eta, 1.3);
-  EXPECT_DOUBLE_EQ(liver->sigmaSPrime(0), 0.2);
+  auto file =
+      scene::readMaterialFile(std::filesystem::path(TISSUE_TEST_DATA_DIR) / "materials" / "liver.json");
+  ASSERT_TRUE(file.ok()) << file.error().message;
+  const auto liver = scene::opticalMaterial(*file);
+  EXPECT_EQ(liver.name, "liver");
+  EXPECT_DOUBLE_EQ(liver.sigmaS[2], 2.0);
+  EXPECT_DOUBLE_EQ(liver.sigmaA[0], 0.5);  // sigma_t 1.5 - sigma_s 1.0
+  // The file's numbers pass through single precision (scene::MaterialLayer holds floats).
+  EXPECT_NEAR(liver.g, 0.8, 1e-6);
+  EXPECT_NEAR(liver.eta, 1.3, 1e-6);
+  EXPECT_NEAR(liver.sigmaSPrime(0), 0.2, 1e-6);
 }
 
 TEST(Materials, BadTablesAndFilesGiveErrorsNamingThePlace) {
@@ -82,9 +88,10 @@ TEST(Materials, BadTablesAndFilesGiveErrorsNamingThePlace) {
   {
     std::ofstream(dir / "bad_material.json") << R"({"ior": 1.3, "layers": [{"g": 0.8, "sigma_s": [1, 1]}]})";
   }
-  auto tissue = loadTissueMaterial(dir / "bad_material.json");
+  auto tissue = scene::readMaterialFile(dir / "bad_material.json");
   ASSERT_FALSE(tissue.ok());
-  EXPECT_NE(tissue.error().message.find("layers[0].sigma_s"), std::string::npos) << tissue.error().message;
+  EXPECT_NE(tissue.error().message.find("bad_material.json"), std::string::npos) << tissue.error().message;
+  EXPECT_NE(tissue.error().message.find("sigma_s"), std::string::npos) << tissue.error().message;
 }
 
 }  // namespace

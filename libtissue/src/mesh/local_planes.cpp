@@ -1,4 +1,5 @@
 #include "tissue/mesh/local_planes.h"
+#include "tissue/core/vec_math.h"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
@@ -83,11 +84,8 @@ Float4 orientPlane(const Eigen::Vector3d& solvedNormal, const Eigen::Vector3d& c
 /// quantising about it is an exact integer translation of quantising about any other.
 Float3 quantisationOrigin(std::span<const Float3> positions) {
   if (positions.empty()) return {};
-  Float3 lo = positions[0], hi = positions[0];
-  for (const auto& p : positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
+  const Bounds3 box = boundsOf(positions);
+  const Float3 lo = box.lo, hi = box.hi;
   const auto snap = [](float a, float b) {
     return float(std::round(0.5 * (double(a) + double(b)) * detail::kQuantumPerMm) / detail::kQuantumPerMm);
   };

@@ -3,7 +3,6 @@
 
 #include <cmath>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <numbers>
 #include <sstream>
 
@@ -83,41 +82,6 @@ Result<std::vector<ScatteringMaterial>> loadJensenMaterials(const std::filesyste
     out.push_back(std::move(m));
   }
   return out;
-}
-
-Result<ScatteringMaterial> loadTissueMaterial(const std::filesystem::path& path) {
-  using nlohmann::json;
-  std::ifstream in(path);
-  if (!in) return Error{"material file " + path.string() + ": cannot be read; check the path"};
-  std::ostringstream text;
-  text << in.rdbuf();
-  const json j = json::parse(text.str(), nullptr, false);
-  const std::string where = "material file " + path.string() + ": key '";
-  if (j.is_discarded() || !j.is_object())
-    return Error{"material file " + path.string() + ": not a JSON object"};
-  if (!j.contains("ior") || !j["ior"].is_number()) return Error{where + "ior' must be a number"};
-  if (!j.contains("layers") || !j["layers"].is_array() || j["layers"].empty())
-    return Error{where + "layers' must be a non-empty array"};
-  const json& layer = j["layers"][0];
-  ScatteringMaterial m;
-  m.name = j.value("name", path.stem().string());
-  m.eta = j["ior"].get<double>();
-  if (!layer.contains("g") || !layer["g"].is_number()) return Error{where + "layers[0].g' must be a number"};
-  m.g = layer["g"].get<double>();
-  for (const char* key : {"sigma_s", "sigma_t"}) {
-    const auto it = layer.find(key);
-    if (it == layer.end() || !it->is_array() || it->size() != kChannels || !(*it)[0].is_number() ||
-        !(*it)[1].is_number() || !(*it)[2].is_number())
-      return Error{where + "layers[0]." + key + "' must be an array of 3 numbers (mm^-1)"};
-  }
-  for (int c = 0; c < kChannels; ++c) {
-    const auto i = static_cast<std::size_t>(c);
-    m.sigmaS[i] = layer["sigma_s"][i].get<double>();
-    m.sigmaA[i] = layer["sigma_t"][i].get<double>() - m.sigmaS[i];
-    if (m.sigmaA[i] < 0.0) return Error{where + "layers[0].sigma_t' must not be below sigma_s"};
-  }
-  m.source = layer.value("source", path.filename().string());
-  return m;
 }
 
 Result<ScatteringMaterial> findMaterial(const std::vector<ScatteringMaterial>& materials,

@@ -3,10 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 
 namespace tissue::subsurface {
@@ -88,61 +85,6 @@ int findLayer(const Boundaries& boundaries, float depthMm) {
 float layerThicknessMm(const Boundaries& boundaries, int i) {
   if (i >= boundaries.count) return std::numeric_limits<float>::infinity();
   return boundaries.depthMm[i] - (i == 0 ? 0.0f : boundaries.depthMm[i - 1]);
-}
-
-namespace {
-
-Result<Float3> readRgb(const nlohmann::json& layer, const char* key, const std::string& where) {
-  if (!layer.contains(key) || !layer[key].is_array() || layer[key].size() != 3)
-    return Error{where + ": \"" + key + "\" must be an array of three numbers (mm^-1, RGB)"};
-  const auto& a = layer[key];
-  for (const auto& v : a)
-    if (!v.is_number()) return Error{where + ": \"" + key + "\" holds a non-number"};
-  return Float3{a[0].get<float>(), a[1].get<float>(), a[2].get<float>()};
-}
-
-}  // namespace
-
-Result<LayerStack> loadLayerStack(const std::filesystem::path& materialJson,
-                                  const std::filesystem::path& dataDir) {
-  const std::string file = materialJson.string();
-  std::ifstream in(materialJson);
-  if (!in) return Error{file + ": cannot open the material file"};
-  std::stringstream text;
-  text << in.rdbuf();
-  nlohmann::json doc = nlohmann::json::parse(text.str(), nullptr, false);
-  if (doc.is_discarded()) return Error{file + ": not valid JSON"};
-  LayerStack stack;
-  if (!doc.contains("depth_scale_mm") || !doc["depth_scale_mm"].is_number())
-    return Error{file + ": \"depth_scale_mm\" (mm) is missing"};
-  stack.depthScaleMm = doc["depth_scale_mm"].get<float>();
-  if (!doc.contains("layers") || !doc["layers"].is_array())
-    return Error{file + ": \"layers\" must be an array"};
-  for (std::size_t i = 0; i < doc["layers"].size(); ++i) {
-    const auto& layer = doc["layers"][i];
-    const std::string where = file + ": layers[" + std::to_string(i) + "]";
-    LayerCoefficients c;
-    auto s = readRgb(layer, "sigma_s", where);
-    if (!s) return s.error();
-    auto t = readRgb(layer, "sigma_t", where);
-    if (!t) return t.error();
-    if (!layer.contains("g") || !layer["g"].is_number()) return Error{where + ": \"g\" is missing"};
-    c.sigma_s = *s;
-    c.sigma_t = *t;
-    c.g = layer["g"].get<float>();
-    stack.layers.push_back(c);
-  }
-  const auto tex = doc.value("textures", nlohmann::json::object());
-  if (!tex.contains("subsurface") || !tex["subsurface"].is_string())
-    return Error{file + ": \"textures.subsurface\" (a path relative to the data folder) is missing"};
-  const std::filesystem::path mapPath = dataDir / tex["subsurface"].get<std::string>();
-  auto image = readImage(mapPath, 4);
-  if (!image) return Error{file + ": subsurface map " + mapPath.string() + ": " + image.error().message};
-  auto maps = subsurfaceMapsFromImages(std::span<const Image8>(&*image, 1));
-  if (!maps) return maps.error();
-  stack.maps = std::move(*maps);
-  if (auto ok = validateLayerStack(stack); !ok) return Error{file + ": " + ok.error().message};
-  return stack;
 }
 
 }  // namespace tissue::subsurface

@@ -14,14 +14,12 @@
 #include "tissue/core/atomic_file.h"
 #include "tissue/core/stopwatch.h"
 #include "tissue/inspect/chart.h"
-#include "tissue/optics/kernel.h"
-#include "tissue/optics/kernel_error.h"
+#include "tissue/studies/kernel_study.h"
 
 namespace tissue::sim_app {
 namespace {
 
-using Rgb = std::array<double, optics::kChannels>;
-using optics::KernelModel;
+using studies::Rgb;
 
 const char* kMaterials[] = {"Apple", "Marble", "Ketchup", "Skin1", "Wholemilk"};
 // Freude's Table 6.3 sums (normalised RGB errors) for SVD1, pre-integration, guided k=1, manual.
@@ -34,107 +32,9 @@ const std::map<std::string, std::array<double, 4>> kThesis63 = {{"Apple", {0.181
 const double kThesis65Svd[] = {1.481, 0.852, 0.432, 0.272, 0.141, 0.088};
 const double kThesis65Deon[] = {1.679, 1.406, 0.949, 0.557, 0.330, 0.214};
 
-struct Spec {
-  std::string label;
-  KernelModel model;
-  optics::KernelSettings settings;
-};
-
-std::vector<Spec> rankOneSpecs() {
-  optics::KernelSettings plain, normalised;
-  normalised.normalizeEnergy = true;
-  return {{"SVD1", KernelModel::Svd, plain},
-          {"SVD1 N.", KernelModel::Svd, normalised},
-          {"Pre-int.", KernelModel::PreIntegrated, plain},
-          {"Guided k=1", KernelModel::Guided, plain},
-          {"Manual", KernelModel::Manual, plain},
-          {"d'Eon 1", KernelModel::Deon, plain},
-          {"Jimenez", KernelModel::Jimenez, plain}};
-}
-
-const std::pair<const char*, optics::TestSignal> kSignals[] = {
-    {"edge", optics::TestSignal::VerticalEdge},
-    {"circle+squares", optics::TestSignal::CircleAndSquares},
-    {"shaded patch", optics::TestSignal::ShadedPatch}};
-
-struct Run {
-  double buildMs = 0;
-  double buildCpuMs = 0;  // process CPU time of the build (single-threaded)
-  Rgb kernelRms{};
-  std::map<std::string, Rgb> imageRms;  // by signal name
-  std::vector<double> sliceRed;         // A(0, x) of the red channel, per grid cell
-};
-
-struct MaterialStudy {
-  std::string name;
-  double cellMm = 0;
-  int halfCells = 0;
-  std::vector<double> truthSliceRed;
-  std::map<std::string, Run> runs;  // by label; "SVD k" / "d'Eon k" for the rank study
-};
-
-double sum(const Rgb& v) {
-  return v[0] + v[1] + v[2];
-}
-
-Result<Run> runSpec(const optics::GroundTruthKernel& truth, const Spec& spec,
-                    const std::map<std::string, std::pair<optics::SignalImage, optics::ImageRgb>>& exact) {
-  optics::KernelSettings s = spec.settings;
-  if (spec.model == KernelModel::Manual) {
-    auto p = optics::manualParameters(truth.name);
-    if (!p) return p.error();
-    s.manual = *p;
-  }
-  Run run;
-  Stopwatch watch;  // from the radial profile: the grid, the model and the taps
-  const std::clock_t cpuStart = std::clock();
-  auto kernel = optics::buildKernel(truth.profile, spec.model, s);
-  run.buildMs = watch.elapsedMs();
-  run.buildCpuMs = 1000.0 * static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
-  if (!kernel) return kernel.error();
-  run.kernelRms = optics::kernelSpaceRms(truth, *kernel);
-  for (const auto& [name, pair] : exact)
-    run.imageRms[name] = optics::rmsDifference(pair.second, optics::convolveSeparable(*kernel, pair.first));
-  const auto h = static_cast<std::size_t>(truth.halfCells);
-  for (std::size_t x = 0; x < static_cast<std::size_t>(truth.size()); ++x) {
-    double a = 0;
-    for (const auto& c : kernel->components)
-      a += static_cast<double>(c.sign.x) * c.dense[0][h] * c.dense[0][x];
-    run.sliceRed.push_back(a);
-  }
-  return run;
-}
-
-Result<MaterialStudy> studyMaterial(const std::string& name) {
-  auto material = findNamedMaterial(name);
-  if (!material) return material.error();
-  auto profile = optics::groundTruthProfile(*material);
-  if (!profile) return profile.error();
-  auto truth = optics::groundTruthKernel(*profile, 100);
-  if (!truth) return truth.error();
-  MaterialStudy study{material->name, truth->cellMm, truth->halfCells, {}, {}};
-  for (int x = 0; x < truth->size(); ++x)
-    study.truthSliceRed.push_back(truth->at(0, truth->halfCells, x));
-  std::map<std::string, std::pair<optics::SignalImage, optics::ImageRgb>> exact;
-  for (const auto& [label, signal] : kSignals) {
-    auto img = optics::makeTestSignal(signal, 256);
-    auto conv = optics::convolveExact(*truth, img);
-    exact[label] = {std::move(img), std::move(conv)};
-  }
-  std::vector<Spec> specs = rankOneSpecs();
-  for (int k = 1; k <= 6; ++k) {
-    optics::KernelSettings s;
-    s.rank = k;
-    specs.push_back({"SVD " + std::to_string(k), KernelModel::Svd, s});
-    specs.push_back({"d'Eon " + std::to_string(k), KernelModel::Deon, s});
-  }
-  for (const auto& spec : specs) {
-    auto run = runSpec(*truth, spec, exact);
-    if (!run) return Error{study.name + ", " + spec.label + ": " + run.error().message};
-    study.runs[spec.label] = std::move(*run);
-  }
-  return study;
-}
+using studies::KernelStudy;
+using studies::rankOneSpecs;
+using studies::sum;
 
 std::string fmt(double v, int digits = 3) {
   char buf[32];
@@ -143,7 +43,7 @@ std::string fmt(double v, int digits = 3) {
 }
 
 // Table 6.3's form: the four thesis models, each RGB error divided by the largest in the table.
-std::string kernelTable(const std::vector<MaterialStudy>& studies) {
+std::string kernelTable(const std::vector<KernelStudy>& studies) {
   const std::vector<std::string> models = {"SVD1",    "Pre-int.", "Guided k=1", "Manual",
                                            "SVD1 N.", "d'Eon 1",  "Jimenez"};
   double top = 0;
@@ -174,7 +74,7 @@ std::string kernelTable(const std::vector<MaterialStudy>& studies) {
   return t.str();
 }
 
-std::string imageTable(const std::vector<MaterialStudy>& studies) {
+std::string imageTable(const std::vector<KernelStudy>& studies) {
   const auto specs = rankOneSpecs();
   std::ostringstream t;
   t << "| material | signal |";
@@ -185,7 +85,7 @@ std::string imageTable(const std::vector<MaterialStudy>& studies) {
     t << "---|";
   t << "\n";
   for (const auto& s : studies) {
-    for (const auto& [signal, unused] : kSignals) {
+    for (const auto& [signal, unused] : tissue::studies::kernelStudySignals()) {
       t << "| " << s.name << " | " << signal << " |";
       for (const auto& spec : specs)
         t << " " << fmt(1e3 * sum(s.runs.at(spec.label).imageRms.at(signal)), 2) << " |";
@@ -198,7 +98,7 @@ std::string imageTable(const std::vector<MaterialStudy>& studies) {
 
 // Table 6.5's form for Skin1 (normalised to the largest RGB error of the table), then the sums of
 // every material.
-std::string rankTable(const std::vector<MaterialStudy>& studies, const std::string& signal) {
+std::string rankTable(const std::vector<KernelStudy>& studies, const std::string& signal) {
   std::ostringstream t;
   const auto& skin =
       *std::find_if(studies.begin(), studies.end(), [](const auto& s) { return s.name == "Skin1"; });
@@ -230,7 +130,7 @@ std::string rankTable(const std::vector<MaterialStudy>& studies, const std::stri
 
 // The models themselves, before tap sampling: kernel-space RMS (sum over RGB) of SVD rank-k and
 // d'Eon k Gaussians, relative to SVD1 of the same material.
-std::string rankKernelTable(const std::vector<MaterialStudy>& studies) {
+std::string rankKernelTable(const std::vector<KernelStudy>& studies) {
   std::ostringstream t;
   t << "| k |";
   for (const auto& s : studies)
@@ -252,7 +152,7 @@ std::string rankKernelTable(const std::vector<MaterialStudy>& studies) {
   return t.str();
 }
 
-std::string timeTable(const std::vector<MaterialStudy>& studies) {
+std::string timeTable(const std::vector<KernelStudy>& studies) {
   const std::vector<std::string> labels = {"SVD1",    "Pre-int.", "Guided k=1", "Manual",
                                            "d'Eon 1", "d'Eon 6",  "SVD 6",      "Jimenez"};
   std::ostringstream t;
@@ -274,7 +174,7 @@ std::string timeTable(const std::vector<MaterialStudy>& studies) {
   return t.str();
 }
 
-nlohmann::json studyJson(const MaterialStudy& s) {
+nlohmann::json studyJson(const KernelStudy& s) {
   nlohmann::json j;
   j["grid_cell_mm"] = s.cellMm;
   for (const auto& [label, run] : s.runs) {
@@ -291,7 +191,7 @@ nlohmann::json studyJson(const MaterialStudy& s) {
 
 // Charts: SVD rank-k against d'Eon k Gaussians (Skin1), and Skin1's red kernels along the axis.
 std::vector<std::string> writeCharts(const std::filesystem::path& dir,
-                                     const std::vector<MaterialStudy>& studies) {
+                                     const std::vector<KernelStudy>& studies) {
   std::vector<std::string> warnings;
   const auto& skin =
       *std::find_if(studies.begin(), studies.end(), [](const auto& s) { return s.name == "Skin1"; });
@@ -335,9 +235,11 @@ std::vector<std::string> writeCharts(const std::filesystem::path& dir,
 }
 
 int runKernelReport(const std::filesystem::path& dir, const GlobalOptions& global) {
-  std::vector<MaterialStudy> studies;
+  std::vector<KernelStudy> studies;
   for (const char* name : kMaterials) {
-    auto s = studyMaterial(name);
+    auto material = findNamedMaterial(name);
+    if (!material) return fail("kernel-report", material.error().message);
+    auto s = tissue::studies::studyKernels(*material);
     if (!s) return fail("kernel-report", s.error().message);
     studies.push_back(std::move(*s));
   }

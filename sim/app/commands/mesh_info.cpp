@@ -6,6 +6,7 @@
 
 #include "command.h"
 #include "output.h"
+#include "tissue/core/vec_math.h"
 #include "tissue/mesh/load_mesh.h"
 #include "tissue/volume/tet_mesh.h"
 
@@ -17,13 +18,8 @@ int describeVolume(const GlobalOptions& global, const std::string& file, float s
   volume::TetLoadReport report;
   auto mesh = volume::loadTetMesh(file, {.scaleToMm = scale}, &report);
   if (!mesh) return fail("mesh-info", mesh.error().message);
-  Float3 lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
-            std::numeric_limits<float>::max()};
-  Float3 hi{-lo.x, -lo.y, -lo.z};
-  for (const auto& p : mesh->positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
+  const Bounds3 box = boundsOf(mesh->positions);
+  const Float3 lo = box.lo, hi = box.hi;
   nlohmann::json out;
   out["file"] = file;
   out["kind"] = "tetrahedral volume";
@@ -72,13 +68,8 @@ void registerMeshInfoCommand(CLI::App& app, const GlobalOptions& global, int& ex
       exitCode = fail("mesh-info", mesh.error().message);
       return;
     }
-    Float3 lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
-              std::numeric_limits<float>::max()};
-    Float3 hi{-lo.x, -lo.y, -lo.z};
-    for (const auto& p : mesh->positions) {
-      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-    }
+    const Bounds3 box = boundsOf(mesh->positions);
+    const Float3 lo = box.lo, hi = box.hi;
     nlohmann::json out;
     out["file"] = opts->file;
     out["vertices"] = mesh->geometricVertexCount;

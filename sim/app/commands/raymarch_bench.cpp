@@ -12,6 +12,7 @@
 #include "output.h"
 #include "raymarch_scene.h"
 #include "tissue/context/headless_context.h"
+#include "tissue/core/statistics.h"
 #include "tissue/core/stopwatch.h"
 #include "tissue/inspect/chart.h"
 
@@ -31,9 +32,8 @@ struct BenchOptions {
   render::RayMarchSettings adaptive;  // its adaptive-quality fields
 };
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? -1.0 : v[v.size() / 2];
+double median(const std::vector<double>& v) {
+  return v.empty() ? -1.0 : summarizeSamples(v).median;
 }
 
 // The last frame's linear radiance divided by the method's scale, and the pixels both the CPU

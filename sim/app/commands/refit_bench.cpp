@@ -8,10 +8,11 @@
 
 #include "command.h"
 #include "deformations.h"
-#include "material_file.h"
+#include "organ_data.h"
 #include "output.h"
 #include "tissue/core/statistics.h"
 #include "tissue/core/stopwatch.h"
+#include "tissue/core/vec_math.h"
 #include "tissue/mesh/deformable_surface.h"
 #include "tissue/mesh/load_mesh.h"
 #include "tissue/mesh/local_planes.h"
@@ -121,9 +122,9 @@ int runScenario(const BenchOptions& o, const GlobalOptions& global) {
     return fail("refit-bench", "--max-normal-error must be >= 0 rad (0: exact); give e.g. 1e-4");
   auto loaded = mesh::loadMesh(parsed->mesh, {.requireUvs = true, .scaleToMm = float(parsed->meshScaleToMm)});
   if (!loaded) return fail("refit-bench", loaded.error().message);
-  auto material = readLayeredMaterial(materialFileFor(parsed->mesh));
-  const mesh::PlaneFitSettings settings{.sigma_t = material ? material->firstLayerMinSigmaT : o.sigma_t,
-                                        .epsilon = o.epsilon};
+  auto material = readDataMaterial(materialFileFor(parsed->mesh));
+  const mesh::PlaneFitSettings settings{
+      .sigma_t = material ? scene::firstLayerMinSigmaT(*material) : o.sigma_t, .epsilon = o.epsilon};
   auto exact = mesh::DeformableSurface::create(*loaded, settings, 0, {.maxNormalErrorRad = 0.0});
   if (!exact) return fail("refit-bench", exact.error().message);
   auto tolerant =
@@ -222,11 +223,8 @@ int run(const BenchOptions& o, const GlobalOptions& global) {
   std::vector<Float3> normals(rest.size());
   mesh::computeVertexNormals(rest, tris, normals);
   // A poke as deep as a tenth of the poked region's extent, at the top of the mesh.
-  Float3 lo = rest[0], hi = rest[0];
-  for (const auto& p : rest) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
+  const Bounds3 box = boundsOf(rest);
+  const Float3 lo = box.lo, hi = box.hi;
   const float size = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
   std::vector<Float3> poked(rest.size()), bent(rest.size());
   applyPoke(rest, normals, topVertex(rest), o.pokeFraction, 0.03f * size, poked);

@@ -14,9 +14,10 @@
 #include "raymarch_scene.h"
 #include "texture_space_setup.h"
 
-#include "../sss_material.h"
+#include "../organ_data.h"
 #include "tissue/context/headless_context.h"
 #include "tissue/core/image.h"
+#include "tissue/core/vec_math.h"
 #include "tissue/render/renderer.h"
 
 namespace tissue::sim_app {
@@ -44,32 +45,15 @@ struct RenderOptions {
   ParallaxOptions parallax;                         // --method parallax
 };
 
-Float3 sub(Float3 a, Float3 b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-Float3 add(Float3 a, Float3 b) {
-  return {a.x + b.x, a.y + b.y, a.z + b.z};
-}
-Float3 mul(Float3 a, float s) {
-  return {a.x * s, a.y * s, a.z * s};
-}
-Float3 cross(Float3 a, Float3 b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-Float3 normalized(Float3 a) {
-  const float l = std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
-  return l > 0.0f ? mul(a, 1.0f / l) : a;
-}
-
 // The key light sits above, right of and behind the camera, at the camera's distance.
 render::Light keyLight(const render::Camera& camera) {
-  const Float3 forward = sub(camera.target, camera.eye);
-  const float distance = std::sqrt(forward.x * forward.x + forward.y * forward.y + forward.z * forward.z);
-  const Float3 f = normalized(forward);
-  const Float3 right = normalized(cross(f, camera.up));
+  const Float3 forward = camera.target - camera.eye;
+  const float distance = length(forward);
+  const Float3 f = normalize(forward);
+  const Float3 right = normalize(cross(f, camera.up));
   const Float3 up = cross(right, f);
   render::Light light;
-  light.positionMm = add(camera.eye, mul(add(mul(right, 0.6f), mul(up, 0.8f)), distance));
+  light.positionMm = camera.eye + (right * 0.6f + up * 0.8f) * distance;
   return light;
 }
 
@@ -183,13 +167,8 @@ int run(RenderOptions o, const GlobalOptions& global) {
     *handle = *texture;
   }
   // Step 3: frame the bounding box, light it, render (a first frame allocates the target).
-  Float3 lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
-            std::numeric_limits<float>::max()};
-  Float3 hi{-lo.x, -lo.y, -lo.z};
-  for (const auto& p : m.positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
+  const Bounds3 box = boundsOf(m.positions);
+  const Float3 lo = box.lo, hi = box.hi;
   render::Scene scene;
   scene.camera = render::frameBoundingBox(lo, hi, static_cast<float>(o.width) / static_cast<float>(o.height));
   scene.lights = {keyLight(scene.camera)};

@@ -34,7 +34,7 @@ Result<nlohmann::json> replay(const ReplayOptions& o) {
   auto organ = loadLoopOrgan(session->scenario);
   if (!organ) return organ.error();
   organ->scenario.frames = static_cast<int>(session->frames.size());
-  auto loop = scene::OrganLoop::create(organ->scenario, std::move(organ->mesh), {.planes = organ->planes});
+  auto loop = scene::OrganLoop::create(organ->scenario, organ->assets.mesh, {.planes = organ->assets.planes});
   if (!loop) return loop.error();
   if (auto match = scene::checkSessionMatches(*session, *loop); !match) return match.error();
   std::optional<DemoRenderer> renderer;
@@ -42,7 +42,7 @@ Result<nlohmann::json> replay(const ReplayOptions& o) {
   Image8 image;
   if (o.render) {
     renderer.emplace(o.width, o.height);
-    auto attached = renderer->attachLoop(*loop, organ->material, o.width, o.height, &image);
+    auto attached = renderer->attachLoop(*loop, organ->assets, o.width, o.height, &image);
     if (!attached) return attached.error();
     request = *attached;
   }

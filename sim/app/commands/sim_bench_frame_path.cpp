@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "deformations.h"
-#include "material_file.h"
+#include "organ_data.h"
 #include "sim_bench.h"
 #include "tissue/core/stopwatch.h"
 #include "tissue/mesh/deformable_surface.h"
@@ -48,8 +48,8 @@ Result<sim::MassSpringSystem> organSystem(std::span<const Float3> rest, std::spa
 Result<nlohmann::json> measureFramePath(const FramePathOptions& o) {
   auto loaded = mesh::loadMesh(o.mesh, {.requireUvs = true});
   if (!loaded) return loaded.error();
-  auto material = readLayeredMaterial(materialFileFor(o.mesh));
-  const float sigmaT = material ? material->firstLayerMinSigmaT : 1.5f;
+  auto material = readDataMaterial(materialFileFor(o.mesh));
+  const float sigmaT = material ? scene::firstLayerMinSigmaT(*material) : 1.5f;
   nlohmann::json out;
   out["mesh"] = o.mesh.string();
   out["frames"] = o.frames;

@@ -7,7 +7,7 @@
 
 #include "command.h"
 #include "demo_render.h"
-#include "material_file.h"
+#include "organ_data.h"
 #include "output.h"
 #include "tissue/core/atomic_file.h"
 #include "tissue/core/statistics.h"
@@ -27,21 +27,18 @@ struct SimulateOptions {
   bool images = false;
 };
 
-/// Renders the run's current shape with the basic renderer: needs UVs and a material file.
+/// Renders the run's current shape with the basic renderer: needs a material file.
 Result<std::string> renderLastFrame(const scenario::ScenarioRun& run, const std::filesystem::path& png) {
-  auto loaded = mesh::loadMesh(run.scenario().mesh,
-                               {.requireUvs = true, .scaleToMm = float(run.scenario().meshScaleToMm)});
-  if (!loaded) return loaded.error();
-  auto material = readLayeredMaterial(materialFileFor(run.scenario().mesh));
-  if (!material) return material.error();
-  auto surface =
-      mesh::DeformableSurface::create(std::move(*loaded), {.sigma_t = material->firstLayerMinSigmaT});
+  auto organ =
+      scene::loadOrganAssets(organSourceFor(run.scenario().mesh, float(run.scenario().meshScaleToMm)));
+  if (!organ) return organ.error();
+  auto surface = mesh::DeformableSurface::create(organ->mesh, organ->planes);
   if (!surface) return surface.error();
   if (surface->geometricRestPositions().size() != run.mesh().positions.size())
     return Error{"the rendered mesh and the simulated mesh differ in vertex count"};
   surface->update(run.positions());
   DemoRenderer renderer(960, 720);
-  if (auto ok = renderer.render(*surface, *material, png); !ok) return ok.error();
+  if (auto ok = renderer.render(*surface, *organ, png); !ok) return ok.error();
   return png.filename().string();
 }
 

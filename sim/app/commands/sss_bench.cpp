@@ -4,12 +4,13 @@
 // dipole profile, tissue::reference). Methods add rows through kMethods below.
 #include <filesystem>
 
+#include "../organ_data.h"
 #include "../sss_bench.h"
-#include "../sss_material.h"
 #include "command.h"
 #include "gl_environment.h"
 #include "output.h"
 #include "tissue/context/headless_context.h"
+#include "tissue/core/vec_math.h"
 #include "tissue/mesh/deformable_surface.h"
 #include "tissue/mesh/load_mesh.h"
 #include "tissue/mesh/tangent_frames.h"
@@ -57,11 +58,8 @@ Result<void> uploadOrgan(SssBenchContext& ctx, const std::string& path) {
     if (!texture) return texture.error();
     *slot = *texture;
   }
-  Float3 lo = m.positions[0], hi = lo;
-  for (const auto& p : m.positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
+  const Bounds3 box = boundsOf(m.positions);
+  const Float3 lo = box.lo, hi = box.hi;
   ctx.scene.camera = render::frameBoundingBox(lo, hi, float(ctx.width) / float(ctx.height));
   const Float3 c{(lo.x + hi.x) / 2, (lo.y + hi.y) / 2, (lo.z + hi.z) / 2};
   ctx.scene.lights[0].positionMm = {c.x + 150.0f, c.y + 200.0f, hi.z + 300.0f};

@@ -12,6 +12,7 @@
 #include "output.h"
 #include "texture_space_setup.h"
 #include "tissue/context/headless_context.h"
+#include "tissue/core/statistics.h"
 #include "tissue/core/stopwatch.h"
 #include "tissue/inspect/chart.h"
 
@@ -46,9 +47,8 @@ render::Scene benchScene(Float3 target, float distance, float organSize, float r
   return scene;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
+double median(const std::vector<double>& v) {
+  return summarizeSamples(v).median;
 }
 
 // The CPU reference of texture-space diffusion's own model: the samples of a full-size,

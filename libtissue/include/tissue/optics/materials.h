@@ -36,10 +36,6 @@ struct ScatteringMaterial {
 /// Errors name the file and line.
 Result<std::vector<ScatteringMaterial>> loadJensenMaterials(const std::filesystem::path& tsv);
 
-/// Loads a layered tissue material (data/materials/NAME.json) as its first layer: sigma_s and
-/// sigma_t (mm^-1) per channel, g, and "ior" as eta. Errors name the file and key.
-Result<ScatteringMaterial> loadTissueMaterial(const std::filesystem::path& json);
-
 /// Finds `name` in `materials`, ignoring ASCII case ("skin1" finds "Skin1"). The error lists the names.
 Result<ScatteringMaterial> findMaterial(const std::vector<ScatteringMaterial>& materials,
                                         std::string_view name);

@@ -9,7 +9,6 @@
 /// channel (François Table 1). Lengths in mm, coefficients in mm^-1. GL-free.
 
 #include <array>
-#include <filesystem>
 #include <span>
 #include <vector>
 
@@ -68,11 +67,5 @@ int findLayer(const Boundaries& boundaries, float depthMm);
 
 /// Thickness of layer `i` in mm (boundary i minus boundary i - 1; the last layer is unbounded).
 float layerThicknessMm(const Boundaries& boundaries, int i);
-
-/// Loads data/materials/NAME.json (docs/DATA.md): the five layers' coefficients,
-/// depth_scale_mm, and the subsurface map named by textures.subsurface (relative to
-/// `dataDir`). Errors name the file and key.
-Result<LayerStack> loadLayerStack(const std::filesystem::path& materialJson,
-                                  const std::filesystem::path& dataDir);
 
 }  // namespace tissue::subsurface
