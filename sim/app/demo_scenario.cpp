@@ -78,6 +78,7 @@ std::string markdownReport(const nlohmann::json& r) {
   return md.str();
 }
 
+#if TISSUE_WITH_VTK
 /// Writes the surface with normals, tangents, planes (eq. 14) and displacement as a .vtp file.
 Result<void> writeInspection(const mesh::DeformableSurface& surface, const std::filesystem::path& path) {
   const auto& m = surface.mesh();
@@ -99,6 +100,7 @@ Result<void> writeInspection(const mesh::DeformableSurface& surface, const std::
                             {"plane_offset_mm", 1, planeOffset},
                             {"displacement_mm", 1, displacement}});
 }
+#endif
 
 /// The organ to shade, its material, and the scenario that moves it.
 struct DemoSetup {
@@ -323,9 +325,15 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
                                            "frame_poked_raymarch.png", "frame_poked_parallax.png"},
                                           "frame_poked_methods.png");
 
-  // Inspection: the poked organ with its shading fields, for ParaView.
+  // Inspection: the poked organ with its shading fields, for ParaView (a VTK export: a build
+  // without VTK, TISSUE_WITH_VTK=OFF, writes none and says so in the report).
+#if TISSUE_WITH_VTK
   if (auto vtp = writeInspection(*d.surface, o.outDir / "organ_poked.vtp"); !vtp) return vtp.error();
   report["inspection"] = "organ_poked.vtp";
+#else
+  report["inspection"] = nullptr;
+  report["inspection_skipped"] = "built without VTK (TISSUE_WITH_VTK=OFF): no organ_poked.vtp";
+#endif
 
   report["mesh"] = d.meshPath.string();
   report["scenario"] = d.loop->run().scenario().file.string();

@@ -2,7 +2,7 @@
 /// \file
 /// Tetrahedral volume meshes: loading legacy VTK (.vtk), VTK XML (.vtu) and Gmsh (.msh) files
 /// with validation, and their geometry (volumes, boundary). Plain arrays only: VTK stays inside
-/// the readers.
+/// the .vtk/.vtu reader, which is compiled only with TISSUE_WITH_VTK.
 
 #include <cstddef>
 #include <filesystem>
@@ -38,7 +38,9 @@ struct TetLoadReport {
 /// (Gmsh ASCII v1, v2 or v4.1). Only 4-node tets are kept; other cells are counted in `report`.
 /// Fails, naming the file and the element (1-based, in file order), on non-finite coordinates,
 /// indices out of range, a tet repeating a vertex, a degenerate (zero-volume) tet, or no tets.
-/// Inverted tets are re-oriented (two vertices swapped) and counted.
+/// Inverted tets are re-oriented (two vertices swapped) and counted. A library built without VTK
+/// (TISSUE_WITH_VTK=OFF) reads .msh only: a .vtk/.vtu file is then one Error saying so and how to
+/// convert it to Gmsh .msh.
 Result<TetMesh> loadTetMesh(const std::filesystem::path& path, const TetLoadOptions& options = {},
                             TetLoadReport* report = nullptr);
 
