@@ -8,12 +8,6 @@
 namespace tissue::viewer {
 namespace {
 
-std::string lastGlfwError() {
-  const char* description = nullptr;
-  glfwGetError(&description);
-  return description ? description : "unknown GLFW error";
-}
-
 Window& windowOf(GLFWwindow* window) {
   return *static_cast<Window*>(glfwGetWindowUserPointer(window));
 }
@@ -21,37 +15,34 @@ Window& windowOf(GLFWwindow* window) {
 }  // namespace
 
 Result<std::unique_ptr<Window>> Window::open(int width, int height, const std::string& title) {
-  // GLFW is initialised once per window: the viewer has exactly one.
-  if (glfwInit() != GLFW_TRUE) return Error{lastGlfwError()};
-  glfwDefaultWindowHints();
-  glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_API);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  GLFWwindow* window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
-  if (!window) {
-    const std::string why = "no GL 3.3 core context (" + lastGlfwError() + ")";
-    glfwTerminate();
-    return Error{why};
-  }
-  glfwMakeContextCurrent(window);
+  // The window, its context and GLFW's initialisation: the library's one GLFW adapter.
+  context::ContextRequest request;
+  request.width = width;
+  request.height = height;
+  request.visible = true;
+  auto window = context::openGlfwWindow(request, title);
+  if (!window) return window.error();
   glfwSwapInterval(1);
-  std::unique_ptr<Window> result(new Window(window));
-  glfwSetWindowUserPointer(window, result.get());
-  glfwSetMouseButtonCallback(window, &Window::onMouseButton);
-  glfwSetScrollCallback(window, &Window::onScroll);
-  glfwSetKeyCallback(window, &Window::onKey);
+  std::unique_ptr<Window> result(new Window(std::move(*window)));
+  GLFWwindow* w = result->m_window;
+  glfwSetWindowUserPointer(w, result.get());
+  glfwSetMouseButtonCallback(w, &Window::onMouseButton);
+  glfwSetScrollCallback(w, &Window::onScroll);
+  glfwSetKeyCallback(w, &Window::onKey);
   return result;
 }
 
-Window::Window(GLFWwindow* window) : m_window(window) {
+Window::Window(std::unique_ptr<context::GlfwWindow> context)
+    : m_context(std::move(context)), m_window(m_context->window()) {
   glfwGetCursorPos(m_window, &m_lastX, &m_lastY);
 }
 
 Window::~Window() {
-  glfwDestroyWindow(m_window);
-  glfwTerminate();
+  // The adapter destroys the window (and GLFW with its last window); the callbacks go first.
+  glfwSetWindowUserPointer(m_window, nullptr);
+  glfwSetMouseButtonCallback(m_window, nullptr);
+  glfwSetScrollCallback(m_window, nullptr);
+  glfwSetKeyCallback(m_window, nullptr);
 }
 
 InputFrame Window::poll() {
@@ -71,7 +62,7 @@ InputFrame Window::poll() {
 }
 
 void Window::present() {
-  glfwSwapBuffers(m_window);
+  m_context->present();
 }
 
 void Window::setTitle(const std::string& title) {
@@ -87,7 +78,7 @@ void Window::windowSize(int& width, int& height) const {
 }
 
 gl::GetProcAddressFn Window::procAddress() const {
-  return [](const char* name) { return glfwGetProcAddress(name); };
+  return m_context->procAddressFunction();
 }
 
 Result<Image8> Window::readBackBuffer() const {

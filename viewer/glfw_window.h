@@ -1,16 +1,16 @@
 #pragma once
 /// \file
-/// The viewer's window: a GLFW window with a GL 3.3 core context, and the user's input
-/// gathered once per frame. GLFW's header stays inside glfw_window.cpp (and the panel's ImGui back end).
+/// The viewer's window: the library's GLFW window (tissue::context::openGlfwWindow, the one GLFW
+/// adapter) and the user's input gathered once per frame. GLFW's header stays inside
+/// glfw_window.cpp (and the panel's ImGui back end).
 
 #include <memory>
 #include <string>
 
+#include "tissue/context/glfw_context.h"
 #include "tissue/core/image.h"
 #include "tissue/core/result.h"
 #include "tissue/gl/proc_address.h"
-
-struct GLFWwindow;
 
 namespace tissue::viewer {
 
@@ -63,11 +63,12 @@ class Window {
   Result<Image8> readBackBuffer() const;
 
  private:
-  explicit Window(GLFWwindow* window);
+  explicit Window(std::unique_ptr<context::GlfwWindow> context);
   static void onMouseButton(GLFWwindow* window, int button, int action, int mods);
   static void onScroll(GLFWwindow* window, double dx, double dy);
   static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
 
+  std::unique_ptr<context::GlfwWindow> m_context;  ///< the window and its context (the library's adapter)
   GLFWwindow* m_window;
   InputFrame m_pending;  ///< events collected by the callbacks since the last poll
   bool m_leftHeld = false;

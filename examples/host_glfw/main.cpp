@@ -24,6 +24,7 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <tissue/tissue.h>
@@ -238,17 +239,22 @@ int main(int argc, char** argv) {
                   -F, F, kFloorZMm});
 
     tissue::Float3 tip{31.82f, 0.0f, 75.0f};
+    // CPU wall time of tissue's calls per frame, and of the host's whole frame up to the swap (on a
+    // lazy rasteriser such as llvmpipe the drawing is paid at the swap).
+    std::vector<double> stepMs, renderMs, frameMs, hostMs;
     for (int frame = 0; frame < frames && !glfwWindowShouldClose(window); ++frame) {
       // 1 the host's instrument: held above for 1 s while the liver settles, then 10 mm into it.
       const float down = std::clamp(float(frame - 60) / 80.0f, 0.0f, 1.0f);
       tip.z = 75.0f - 25.7f * down;
       (void)scene->setInstrumentPose({.tipMm = tip, .axis = {0, 0, 1}, .radiusMm = kToolRadiusMm});
       // 2 simulation and mesh update (no GL)
+      tissue::Stopwatch watch, whole;
       if (auto s = scene->step(1.0 / 60.0); !s) {
         std::fprintf(stderr, "host_glfw: %s\n", s.error().message.c_str());
         status = 1;
         break;
       }
+      stepMs.push_back(watch.elapsedMs());
       // 3 the host's frame: clear, its instrument
       glViewport(0, 0, kWidth, kHeight);
       glClearColor(0.2f, 0.2f, 0.2f, 1.0f);
@@ -269,11 +275,14 @@ int main(int argc, char** argv) {
       target.height = kHeight;
       target.clear = false;
       target.depth = tissue::render::HostDepth::TestAndWrite;
+      watch.restart();
       if (auto r = scene->render(target); !r) {
         std::fprintf(stderr, "host_glfw: %s\n", r.error().message.c_str());
         status = 1;
         break;
       }
+      renderMs.push_back(watch.elapsedMs());
+      frameMs.push_back(stepMs.back() + renderMs.back());
       // 5 the host's floor, after tissue: tissue restored the host's state (program, VAO, depth)
       glUseProgram(program);
       glUniform3fv(glGetUniformLocation(program, "u_colour"), 1, kFloorColour);
@@ -294,7 +303,15 @@ int main(int argc, char** argv) {
         if (!(f.z > 0.05f)) std::printf("host_glfw: FAILED: no force on the instrument\n"), status = 1;
       }
       glfwSwapBuffers(window);
+      hostMs.push_back(whole.elapsedMs());
       glfwPollEvents();
+    }
+    for (const auto& [name, samples] :
+         {std::pair{"step (simulate, mesh)", &stepMs}, std::pair{"render (upload, draw; CPU)", &renderMs},
+          std::pair{"tissue per frame", &frameMs}, std::pair{"host frame to the swap", &hostMs}}) {
+      const auto t = tissue::summarizeSamples(*samples);
+      std::printf("host_glfw: %s: median %.2f ms, p99 %.2f ms, max %.2f ms over %zu frames\n", name, t.median,
+                  t.p99, t.max, t.count);
     }
   }  // the scene goes while the host's context is current
   glfwDestroyWindow(window);

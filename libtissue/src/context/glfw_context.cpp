@@ -26,7 +26,7 @@ std::string lastGlfwError() {
   return description ? description : "unknown GLFW error";
 }
 
-class GlfwContext final : public GlContext {
+class GlfwContext final : public GlfwWindow {
  public:
   explicit GlfwContext(GLFWwindow* window) : m_window(window) {}
   ~GlfwContext() override {
@@ -44,6 +44,7 @@ class GlfwContext final : public GlContext {
   gl::GlProc getProcAddress(const char* name) const override { return glfwGetProcAddress(name); }
   void present() override { glfwSwapBuffers(m_window); }
   const ContextInfo& info() const override { return m_info; }
+  GLFWwindow* window() const override { return m_window; }
   void setInfo(ContextInfo info) { m_info = std::move(info); }
 
  private:
@@ -54,6 +55,12 @@ class GlfwContext final : public GlContext {
 }  // namespace
 
 Result<std::unique_ptr<GlContext>> createGlfwContext(const ContextRequest& request) {
+  auto window = openGlfwWindow(request);
+  if (!window) return window.error();
+  return std::unique_ptr<GlContext>(std::move(*window));
+}
+
+Result<std::unique_ptr<GlfwWindow>> openGlfwWindow(const ContextRequest& request, const std::string& title) {
   auto& library = glfwLibrary();
   GLFWwindow* window = nullptr;
   {
@@ -70,8 +77,8 @@ Result<std::unique_ptr<GlContext>> createGlfwContext(const ContextRequest& reque
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, request.debug ? GLFW_TRUE : GLFW_FALSE);
     glfwWindowHint(GLFW_VISIBLE, request.visible ? GLFW_TRUE : GLFW_FALSE);
-    window =
-        glfwCreateWindow(std::max(request.width, 1), std::max(request.height, 1), "tissue", nullptr, nullptr);
+    window = glfwCreateWindow(std::max(request.width, 1), std::max(request.height, 1), title.c_str(), nullptr,
+                              nullptr);
     if (!window) {
       const std::string why = lastGlfwError();
       if (library.users == 0) glfwTerminate();
@@ -85,7 +92,7 @@ Result<std::unique_ptr<GlContext>> createGlfwContext(const ContextRequest& reque
   auto info = queryContextInfo(context->procAddressFunction(), request, "glfw", "window");
   if (!info) return info.error();
   context->setInfo(std::move(*info));
-  return std::unique_ptr<GlContext>(std::move(context));
+  return std::unique_ptr<GlfwWindow>(std::move(context));
 }
 
 }  // namespace tissue::context

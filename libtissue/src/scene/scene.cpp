@@ -24,8 +24,9 @@ float uniformScaleOf(const Mat4& m) {
 /// (mirroring flips the winding and the tangents' handedness).
 Result<void> checkModel(const Mat4& m) {
   if (!isAffineInvertible(m) || !(determinant3(m) > 0.0f))
-    return Error{"model matrix: must be affine (last row 0 0 0 1), finite and invertible without mirroring "
-                 "(det > 0); column-major, mm"};
+    return Error{
+        "model matrix: must be affine (last row 0 0 0 1), finite and invertible without mirroring "
+        "(det > 0); column-major, mm"};
   return {};
 }
 
@@ -144,7 +145,8 @@ Result<Scene> Scene::create(const gl::GetProcAddressFn& getProcAddress, const Sc
 
 Result<OrganId> Scene::addOrgan(const OrganDesc& desc) {
   Impl& s = *m_impl;
-  if (auto ok = checkModel(desc.model); !ok) return Error{"organ " + desc.mesh.string() + ": " + ok.error().message};
+  if (auto ok = checkModel(desc.model); !ok)
+    return Error{"organ " + desc.mesh.string() + ": " + ok.error().message};
   if (auto current = s.makeCurrent(); !current) return current.error();
   Impl::Organ organ;
   organ.model = desc.model;
@@ -210,8 +212,7 @@ Result<void> Scene::setMethod(OrganId id, render::ShadingMethod method) {
 Result<void> Scene::setTransform(OrganId id, const Mat4& model) {
   auto o = m_impl->organ(id);
   if (!o) return o.error();
-  if (!isAffineInvertible(model))
-    return Error{"model matrix: must be affine and invertible (column-major, mm)"};
+  if (auto ok = checkModel(model); !ok) return ok.error();
   (*o)->model = model;
   return {};
 }
