@@ -1,4 +1,5 @@
 #include "demo_scenario.h"
+#include "demo_embedded.h"
 
 #include <algorithm>
 #include <cmath>
@@ -320,6 +321,9 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
   report["raymarch"] =
       renderPokedOrganRayMarch(*d.surface, d.organ.material.name, o.outDir, o.width, o.height);
   report["parallax"] = renderer.renderParallax(*d.surface, d.organ, o.outDir / "frame_poked_parallax.png");
+  // The scene a host embeds (scene::Scene, as the C API and the example hosts use it): the
+  // simulated liver and a turned, scaled static copy in different methods, poked by a host.
+  report["embedded_scene"] = renderEmbeddedScene(o.outDir, o.width, o.height);
   report["methods"] = writeMethodsMontage(o.outDir,
                                           {"frame_poked_separable.png", "frame_poked_texture_space.png",
                                            "frame_poked_raymarch.png", "frame_poked_parallax.png"},

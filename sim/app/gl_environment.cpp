@@ -14,8 +14,16 @@ std::string environment(const char* name) {
 }  // namespace
 
 Result<std::unique_ptr<context::GlContext>> createAppContext(context::ContextRequest request, bool log) {
-  if (request.eglPlatform.empty()) request.eglPlatform = environment("TISSUE_EGL_PLATFORM");
-  return context::createHeadlessContext(request, {.backend = environment("TISSUE_GL_CONTEXT"), .log = log});
+  if (request.eglPlatform.empty()) request.eglPlatform = eglPlatformFromEnvironment();
+  return context::createHeadlessContext(request, {.backend = glContextFromEnvironment(), .log = log});
+}
+
+std::string glContextFromEnvironment() {
+  return environment("TISSUE_GL_CONTEXT");
+}
+
+std::string eglPlatformFromEnvironment() {
+  return environment("TISSUE_EGL_PLATFORM");
 }
 
 gl::ShaderLibrarySettings shaderSettingsFromEnvironment() {

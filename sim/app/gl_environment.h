@@ -7,6 +7,7 @@
 ///   TISSUE_SHADER_DIR    a folder whose GLSL files override the embedded ones (live editing)
 
 #include <memory>
+#include <string>
 
 #include "tissue/context/gl_context.h"
 #include "tissue/context/headless_context.h"
@@ -22,5 +23,9 @@ Result<std::unique_ptr<context::GlContext>> createAppContext(context::ContextReq
 
 /// The shader sources' override folder from TISSUE_SHADER_DIR (empty: embedded only).
 gl::ShaderLibrarySettings shaderSettingsFromEnvironment();
+/// TISSUE_GL_CONTEXT (empty: EGL, then OSMesa), for context::HeadlessOptions::backend.
+std::string glContextFromEnvironment();
+/// TISSUE_EGL_PLATFORM (empty: device, then surfaceless), for context::ContextRequest::eglPlatform.
+std::string eglPlatformFromEnvironment();
 
 }  // namespace tissue::sim_app
