@@ -7,7 +7,6 @@
 #include <iostream>
 
 #include "command.h"
-#include "deformations.h"
 #include "organ_data.h"
 #include "output.h"
 #include "tissue/core/statistics.h"
@@ -19,6 +18,8 @@
 #include "tissue/mesh/vertex_normals.h"
 #include "tissue/scenario/scenario.h"
 #include "tissue/scenario/scenario_run.h"
+#include "tissue/studies/deformations.h"
+#include "tissue/studies/refit_study.h"
 
 namespace tissue::sim_app {
 namespace {
@@ -39,54 +40,24 @@ double median(const std::vector<double>& v) {
   return quantile(v, 0.5);
 }
 
-/// Times full and incremental re-fits between the rest state and `deformed`, alternating so
-/// each incremental update moves the same vertices; returns the figures as JSON.
+/// The re-fit comparison between the rest state and `deformed` as JSON.
 nlohmann::json measure(std::span<const Float3> rest, std::span<const Float3> deformed,
                        std::span<const Triangle> tris, const mesh::PlaneFitSettings& settings, int repeats,
                        const mesh::PlaneRefitSettings& refit) {
-  std::vector<Float3> restNormals(rest.size()), defNormals(rest.size());
-  mesh::computeVertexNormals(rest, tris, restNormals);
-  mesh::computeVertexNormals(deformed, tris, defNormals);
-  mesh::IncrementalPlaneFitter fitter(rest, tris, settings), tolerant(rest, tris, settings);
-  fitter.fitAll(rest, restNormals);
-  tolerant.fitAll(rest, restNormals);
-  std::vector<Float4> full(rest.size());
-  std::vector<double> fullMs, incMs, tolMs;
-  mesh::RefitStats stats, tolStats;
-  double worstAngle = 0.0, worstOffset = 0.0, tolAngle = 0.0, tolOffset = 0.0;
-  for (int r = 0; r < repeats; ++r) {
-    Stopwatch clock;
-    mesh::fitVertexPlanes(deformed, defNormals, fitter.neighbourhoods(), full);
-    fullMs.push_back(clock.elapsedMs());
-    clock.restart();
-    stats = fitter.update(deformed, defNormals);
-    incMs.push_back(clock.elapsedMs());
-    clock.restart();
-    tolStats = tolerant.update(deformed, defNormals, refit);
-    tolMs.push_back(clock.elapsedMs());
-    const auto dev = mesh::comparePlanes(fitter.planes(), full);
-    worstAngle = std::max(worstAngle, dev.maxAngleRad);
-    worstOffset = std::max(worstOffset, dev.maxOffsetMm);
-    const auto tdev = mesh::comparePlanes(tolerant.planes(), full);
-    tolAngle = std::max(tolAngle, tdev.maxAngleRad);
-    tolOffset = std::max(tolOffset, tdev.maxOffsetMm);
-    fitter.update(rest, restNormals);  // back to rest (same vertices move), untimed
-    tolerant.update(rest, restNormals, refit);
-  }
-  const double f = median(fullMs), i = median(incMs);
+  const studies::RefitComparison c = studies::compareRefits(rest, deformed, tris, settings, repeats, refit);
   nlohmann::json out;
-  out["moved_fraction"] = double(stats.movedVertices) / double(rest.size());
-  out["refitted_fraction"] = double(stats.refittedPlanes) / double(rest.size());
-  out["full_refit_ms"] = f;
-  out["incremental_refit_ms"] = i;
-  out["speedup"] = f / std::max(i, 1e-9);
-  out["max_normal_deviation_rad"] = worstAngle;
-  out["max_offset_deviation_mm"] = worstOffset;
+  out["moved_fraction"] = c.movedFraction;
+  out["refitted_fraction"] = c.exact.refittedFraction;
+  out["full_refit_ms"] = c.fullRefitMs;
+  out["incremental_refit_ms"] = c.exact.refitMs;
+  out["speedup"] = c.speedup();
+  out["max_normal_deviation_rad"] = c.exact.maxNormalDeviationRad;
+  out["max_offset_deviation_mm"] = c.exact.maxOffsetDeviationMm;
   out["tolerant"] = {{"max_normal_error_rad", refit.maxNormalErrorRad},
-                     {"refitted_fraction", double(tolStats.refittedPlanes) / double(rest.size())},
-                     {"refit_ms", median(tolMs)},
-                     {"max_normal_deviation_rad", tolAngle},
-                     {"max_offset_deviation_mm", tolOffset}};
+                     {"refitted_fraction", c.tolerant.refittedFraction},
+                     {"refit_ms", c.tolerant.refitMs},
+                     {"max_normal_deviation_rad", c.tolerant.maxNormalDeviationRad},
+                     {"max_offset_deviation_mm", c.tolerant.maxOffsetDeviationMm}};
   return out;
 }
 
@@ -227,8 +198,8 @@ int run(const BenchOptions& o, const GlobalOptions& global) {
   const Float3 lo = box.lo, hi = box.hi;
   const float size = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
   std::vector<Float3> poked(rest.size()), bent(rest.size());
-  applyPoke(rest, normals, topVertex(rest), o.pokeFraction, 0.03f * size, poked);
-  applyGlobalBend(rest, 0.05f * size, bent);
+  studies::applyPoke(rest, normals, studies::topVertex(rest), o.pokeFraction, 0.03f * size, poked);
+  studies::applyGlobalBend(rest, 0.05f * size, bent);
   const int repeats = o.repeats > 0 ? o.repeats : int(std::clamp<std::size_t>(2000000 / rest.size(), 5, 200));
 
   nlohmann::json out = measure(rest, poked, tris, settings, repeats, refit);
