@@ -15,6 +15,7 @@
 #include "tissue/reference/screen_convolution.h"
 #include "tissue/render/renderer.h"
 #include "tissue/scene/organ_methods.h"
+#include "tissue/studies/coverage.h"
 
 namespace tissue::sim_app {
 
@@ -139,7 +140,7 @@ void addReferenceError(render::Renderer& renderer, const render::FloatImage& dif
   auto radiance = renderer.readFrame(render::FrameView::Radiance);
   if (!blurred || !radiance) return;
   std::vector<Float4> pre = diffuse.pixels;
-  dropPartialCoverage(pre, *radiance);  // MSAA silhouettes are not surface points
+  studies::dropPartialCoverage(pre, *radiance);  // MSAA silhouettes are not surface points
   const reference::ScreenBuffers frame{diffuse.width, diffuse.height, pre, position.pixels};
   const std::vector<reference::RadialProfile> profiles{{}, truth};
   Stopwatch watch;

@@ -4,13 +4,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "deformations.h"
 #include "organ_data.h"
 #include "output.h"
 #include "tissue/context/headless_context.h"
 #include "tissue/core/vec_math.h"
 #include "tissue/mesh/load_mesh.h"
 #include "tissue/mesh/vertex_normals.h"
+#include "tissue/studies/deformations.h"
 #include "tissue/subsurface/reference_image.h"
 
 namespace tissue::sim_app {
@@ -64,7 +64,7 @@ Result<RayMarchScene> rayMarchSceneFor(const mesh::DeformableSurface& s, const s
   if (!material) return material.error();
   scene.material = std::move(*material);
   scene.surface = &s;
-  scene.pokeSite = topVertex(s.geometricRestPositions());
+  scene.pokeSite = studies::topVertex(s.geometricRestPositions());
   // Camera: the whole organ, or a close-up of the poke site seen from above and in front.
   const Bounds3 box = boundsOf(s.geometricRestPositions());
   Float3 lo = box.lo, hi = box.hi;
@@ -86,7 +86,7 @@ void pokeScene(RayMarchScene& scene, double fraction, float depthMm) {
   const auto rest = scene.surface->geometricRestPositions();
   std::vector<Float3> normals(rest.size()), positions(rest.begin(), rest.end());
   mesh::computeVertexNormals(rest, scene.surface->geometricTriangles(), normals);
-  applyPoke(rest, normals, scene.pokeSite, fraction, depthMm, positions);
+  studies::applyPoke(rest, normals, scene.pokeSite, fraction, depthMm, positions);
   scene.owned->update(positions);
 }
 

@@ -34,10 +34,6 @@ struct ScenarioBenchOptions {
 /// second), divergence events, degraded frames, the largest force (N) and refactoring (ms).
 Result<nlohmann::json> measureScenario(const ScenarioBenchOptions& options);
 
-/// A bound on the largest natural angular frequency (rad/s) of `system` at rest, by
-/// Gershgorin on M^-1/2 K M^-1/2: omega^2 <= max_i sum over i's springs k (1/m_i + 1/sqrt(m_i m_j)).
-double omegaBound(const sim::MassSpringSystem& system);
-
 /// One frame's simulation (symplectic Euler substepped below 2/omega_max, implicit Euler,
 /// fast-mass-spring) (implicit Euler and fast-mass-spring), incremental plane re-fit
 /// and tangent rebuild on `options.mesh`, mean ms per phase, as a JSON object.

@@ -6,6 +6,7 @@
 #include "organ_data.h"
 #include "tissue/core/statistics.h"
 #include "tissue/core/stopwatch.h"
+#include "tissue/studies/coverage.h"
 
 namespace tissue::sim_app {
 namespace {
@@ -15,19 +16,6 @@ double median(const std::vector<double>& v) {
 }
 
 }  // namespace
-
-void dropPartialCoverage(std::vector<Float4>& diffuse, const render::FloatImage& radiance) {
-  for (std::size_t i = 0; i < diffuse.size() && i < radiance.pixels.size(); ++i)
-    if (radiance.pixels[i].w < 0.999f) diffuse[i].w = 0.0f;
-}
-
-void removeCoverageWeight(std::vector<Float4>& blurred, const render::FloatImage& radiance) {
-  for (std::size_t i = 0; i < blurred.size() && i < radiance.pixels.size(); ++i) {
-    const float a = radiance.pixels[i].w;
-    if (a > 0.0f && a < 1.0f)
-      blurred[i] = {blurred[i].x / a, blurred[i].y / a, blurred[i].z / a, blurred[i].w};
-  }
-}
 
 Result<std::pair<double, double>> timeFrames(SssBenchContext& ctx, const std::string& passPrefix) {
   std::vector<double> frame, method;
@@ -67,7 +55,7 @@ Result<reference::ImageError> compareLastFrame(SssBenchContext& ctx) {
   if (!blurred) return blurred.error();
   auto radiance = ctx.renderer->readFrame(render::FrameView::Radiance);
   if (!radiance) return radiance.error();
-  removeCoverageWeight(blurred->pixels, *radiance);
+  studies::removeCoverageWeight(blurred->pixels, *radiance);
   return reference::compareWithReference({ctx.width, ctx.height, ctx.diffuse, ctx.position}, blurred->pixels,
                                          ctx.reference, ctx.profiles);
 }

@@ -39,16 +39,6 @@ struct SssBenchContext {
   std::vector<Float3> reference;                   ///< the reference result, per pixel
 };
 
-/// Marks pixels only partly covered by a surface (radiance a < 1 after an MSAA resolve) as
-/// "no object" (id 0) in `diffuse`, for frames whose resolve averaged their positions and ids
-/// with the background (before the separable resolve; the demo's reference still uses it).
-void dropPartialCoverage(std::vector<Float4>& diffuse, const render::FloatImage& radiance);
-
-/// Divides the RGB of pixels partly covered (0 < radiance a < 1) by their coverage: the separable
-/// blur weights silhouettes by coverage for the tone map, the reference convolves the surface's
-/// own colour there.
-void removeCoverageWeight(std::vector<Float4>& blurred, const render::FloatImage& radiance);
-
 /// Renders `ctx.scene` `ctx.frames` times (after one warm-up); median frame ms and the median
 /// summed CPU ms of the passes whose names start with `passPrefix`.
 Result<std::pair<double, double>> timeFrames(SssBenchContext& ctx, const std::string& passPrefix);

@@ -70,3 +70,15 @@
 // Inspection: .vtp exports and charts (an Error when tissue was built without VTK).
 #include "tissue/inspect/chart.h"
 #include "tissue/inspect/vtk_export.h"
+
+// Studies: the computations behind the benchmarks and studies (errors against references,
+// profile choice, re-fit comparisons), for hosts that measure as tissue-sim does.
+#include "tissue/studies/coverage.h"
+#include "tissue/studies/deformations.h"
+#include "tissue/studies/kernel_study.h"
+#include "tissue/studies/parallax_study.h"
+#include "tissue/studies/profile_study.h"
+#include "tissue/studies/raymarch_study.h"
+#include "tissue/studies/refit_study.h"
+#include "tissue/studies/sim_bench.h"
+#include "tissue/studies/tsd_error.h"

@@ -3,20 +3,15 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <iostream>
 
 #include "command.h"
 #include "named_material.h"
 #include "output.h"
-#include "tissue/optics/burley.h"
-#include "tissue/optics/dipole.h"
 #include "tissue/optics/materials.h"
-#include "tissue/optics/monte_carlo.h"
-#include "tissue/optics/multipole.h"
+#include "tissue/studies/profile_study.h"
 
 namespace tissue::sim_app {
 namespace {
@@ -33,32 +28,6 @@ struct ProfileOptions {
   bool progress = false;
 };
 
-// One wavelength's profile and totals.
-struct ChannelProfile {
-  double rd = 0, rdStderr = 0, tt = 0, ttStderr = 0, specular = 0;
-  std::vector<double> rdRadial;
-  double seconds = 0;        // MC: the run; analytic: one evaluation of the whole radial profile
-  std::int64_t photons = 0;  // MC: photons launched
-  int threads = 0;           // MC: worker threads used
-};
-
-// The first layer as the analytic models see it: reduced coefficients, relative index.
-struct AnalyticLayer {
-  double sigmaA, sigmaSPrime, eta, thickness;
-};
-AnalyticLayer analyticLayer(const optics::LayeredMedium& m) {
-  const auto& l = m.layers[0];
-  return {l.mua, l.mus * (1.0 - l.g), l.n / m.ambientAbove, l.thickness};
-}
-
-// Outer radius of the default grid: 6 diffusion lengths 1/sigma_tr, at most 30 transport mean free paths.
-double defaultRadius(const optics::LayeredMedium& m) {
-  const auto a = analyticLayer(m);
-  const double sigmaTPrime = a.sigmaA + a.sigmaSPrime;
-  const double sigmaTr = std::sqrt(3.0 * a.sigmaA * sigmaTPrime);
-  return sigmaTr > 0 ? std::min(6.0 / sigmaTr, 30.0 / sigmaTPrime) : 30.0 / sigmaTPrime;
-}
-
 void drawProgress(double fraction) {
   const int width = 40;
   const int filled = static_cast<int>(fraction * width);
@@ -69,68 +38,8 @@ void drawProgress(double fraction) {
   std::fflush(stderr);
 }
 
-// Times `evaluate` (the whole radial profile) over repeats for at least 20 ms; seconds per call.
-template <class F>
-double timeEvaluation(F&& evaluate) {
-  const auto start = std::chrono::steady_clock::now();
-  int repeats = 0;
-  double elapsed = 0;
-  do {
-    evaluate();
-    ++repeats;
-    elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  } while (elapsed < 0.02);
-  return elapsed / repeats;
-}
-
-Result<ChannelProfile> computeChannel(const ProfileOptions& o, const optics::LayeredMedium& medium,
-                                      const optics::RadialGrid& grid) {
-  ChannelProfile out;
-  if (o.method == "mc") {
-    optics::MonteCarloSettings s;
-    s.photons = o.photons;
-    s.seed = o.seed;
-    s.threads = o.threads;
-    s.grid = grid;
-    if (o.progress) s.onProgress = drawProgress;
-    auto r = optics::simulateMonteCarlo(medium, s);
-    if (!r) return r.error();
-    return ChannelProfile{r->rd,       r->rdStderr, r->tt,      r->ttStderr, r->specular,
-                          r->rdRadial, r->seconds,  r->photons, r->threads};
-  }
-  const auto a = analyticLayer(medium);
-  const double r0 = (medium.ambientAbove - medium.layers[0].n) / (medium.ambientAbove + medium.layers[0].n);
-  out.specular = r0 * r0;
-  out.rdRadial.resize(static_cast<std::size_t>(grid.bins));
-  std::function<double(double)> profile;
-  if (o.method == "dipole" || (o.method == "multipole" && std::isinf(a.thickness))) {
-    const auto d = optics::makeDipole(a.sigmaA, a.sigmaSPrime, a.eta);
-    out.rd = optics::dipoleTotalRd(d);
-    profile = [d](double r) { return optics::dipoleRd(d, r); };
-  } else if (o.method == "multipole") {
-    const auto m = optics::makeMultipole(a.sigmaA, a.sigmaSPrime, a.eta, a.thickness);
-    out.rd = optics::multipoleTotalR(m);
-    out.tt = optics::multipoleTotalT(m);
-    profile = [m](double r) { return optics::multipoleR(m, r); };
-  } else {
-    // Burley's albedo A: the dipole's total diffuse reflectance of the same medium; l: the mean
-    // free path 1/sigma_t' of the similarity-reduced medium; s from the searchlight/mfp fit.
-    const double albedo = optics::dipoleTotalRd(optics::makeDipole(a.sigmaA, a.sigmaSPrime, a.eta));
-    const double d =
-        1.0 / (a.sigmaA + a.sigmaSPrime) / optics::burleyScaling(albedo, optics::BurleyFit::SearchlightMfp);
-    out.rd = albedo;
-    profile = [d, albedo](double r) { return optics::burleyProfile(r, d, albedo); };
-  }
-  auto evaluate = [&] {
-    for (int i = 0; i < grid.bins; ++i)
-      out.rdRadial[static_cast<std::size_t>(i)] = profile(grid.radius(i));
-  };
-  out.seconds = timeEvaluation(evaluate);
-  return out;
-}
-
 Result<void> checkOptions(const ProfileOptions& o) {
-  if (o.method != "mc" && o.method != "dipole" && o.method != "multipole" && o.method != "burley")
+  if (!studies::parseProfileMethod(o.method))
     return Error{"--method '" + o.method + "' is unknown; use mc, dipole, multipole or burley"};
   if (o.material.empty() == o.medium.empty())
     return Error{"pass exactly one of --material NAME and --medium FILE.json"};
@@ -140,7 +49,8 @@ Result<void> checkOptions(const ProfileOptions& o) {
 }
 
 // One value per channel: a number for a single-wavelength medium, [R, G, B] for a material.
-nlohmann::json perChannel(const std::vector<ChannelProfile>& ch, double ChannelProfile::*field) {
+nlohmann::json perChannel(const std::vector<studies::ChannelProfile>& ch,
+                          double studies::ChannelProfile::*field) {
   if (ch.size() == 1) return ch[0].*field;
   nlohmann::json a = nlohmann::json::array();
   for (const auto& c : ch)
@@ -168,28 +78,32 @@ int runProfile(const ProfileOptions& o, const GlobalOptions& global) {
   }
   if (o.method != "mc" && media[0].layers.size() > 1)
     std::cerr << "tissue-sim profile: warning: analytic methods use the first layer only\n";
-  if (o.method == "multipole" && media[0].layers[0].thickness < 1.0 / (analyticLayer(media[0]).sigmaA +
-                                                                       analyticLayer(media[0]).sigmaSPrime))
+  if (o.method == "multipole" && studies::multipoleUnreliable(media[0]))
     std::cerr
         << "tissue-sim profile: warning: the slab is thinner than 1/sigma_t'; the multipole is unreliable\n";
   double rMax = 0;
   for (const auto& m : media)
-    rMax = std::max(rMax, defaultRadius(m));
+    rMax = std::max(rMax, studies::defaultProfileRadiusMm(m));
   const optics::RadialGrid grid{.drMm = o.drMm > 0 ? o.drMm : rMax / o.bins, .bins = o.bins};
 
-  std::vector<ChannelProfile> channels;
-  ProfileOptions opts = o;
-  opts.progress = o.progress || (o.method == "mc" && isatty(STDERR_FILENO) && o.photons >= 1000000);
+  std::vector<studies::ChannelProfile> channels;
+  studies::ProfileConfig config;
+  config.method = *studies::parseProfileMethod(o.method);
+  config.photons = o.photons;
+  config.seed = o.seed;
+  config.threads = o.threads;
+  if (o.progress || (o.method == "mc" && isatty(STDERR_FILENO) && o.photons >= 1000000))
+    config.onProgress = drawProgress;
   for (const auto& m : media) {
-    auto ch = computeChannel(opts, m, grid);
+    auto ch = studies::profileChannel(m, grid, config);
     if (!ch) return fail("profile", ch.error().message);
     channels.push_back(std::move(*ch));
   }
-  out["Rd"] = perChannel(channels, &ChannelProfile::rd);
-  out["Rd_stderr"] = perChannel(channels, &ChannelProfile::rdStderr);
-  out["Tt"] = perChannel(channels, &ChannelProfile::tt);
-  out["Tt_stderr"] = perChannel(channels, &ChannelProfile::ttStderr);
-  out["specular"] = perChannel(channels, &ChannelProfile::specular);
+  out["Rd"] = perChannel(channels, &studies::ChannelProfile::rd);
+  out["Rd_stderr"] = perChannel(channels, &studies::ChannelProfile::rdStderr);
+  out["Tt"] = perChannel(channels, &studies::ChannelProfile::tt);
+  out["Tt_stderr"] = perChannel(channels, &studies::ChannelProfile::ttStderr);
+  out["specular"] = perChannel(channels, &studies::ChannelProfile::specular);
   double seconds = 0;
   for (const auto& c : channels)
     seconds += c.seconds;

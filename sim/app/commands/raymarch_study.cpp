@@ -9,6 +9,7 @@
 #include "command.h"
 #include "output.h"
 #include "raymarch_scene.h"
+#include "tissue/studies/raymarch_study.h"
 
 namespace tissue::sim_app {
 namespace {
@@ -27,66 +28,38 @@ struct Case {
   const char* what;
 };
 
-// RMS of the display difference over covered pixels whose N.V lies in [lo, hi).
-double rmsWhere(const Image8& a, const Image8& b, const subsurface::RadianceImage& ref, float lo, float hi) {
-  std::vector<std::uint8_t> mask(ref.covered.size(), 0);
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < mask.size(); ++i)
-    if (ref.covered[i] && ref.viewCos[i] >= lo && ref.viewCos[i] < hi) mask[i] = 1, ++n;
-  return n ? subsurface::displayRms(a, b, mask) : -1.0;
-}
-
-// |a - b| x 8 per channel: where an approximation goes wrong.
-Image8 errorImage(const Image8& a, const Image8& b) {
-  Image8 out(a.width, a.height, 4);
-  for (int y = 0; y < a.height; ++y)
-    for (int x = 0; x < a.width; ++x) {
-      for (int c = 0; c < 3; ++c)
-        out.at(x, y)[c] = std::uint8_t(std::min(255, 8 * std::abs(a.at(x, y)[c] - b.at(x, y)[c])));
-      out.at(x, y)[3] = 255;
-    }
-  return out;
-}
-
 Result<nlohmann::json> study(const Case& c, const StudyOptions& o) {
   auto loaded = loadRayMarchScene(dataDir() / "meshes" / (std::string(c.mesh) + ".obj"),
                                   float(o.width) / float(o.height), true);
   if (!loaded) return loaded.error();
   RayMarchScene& scene = *loaded;
   if (c.pokeDepthMm > 0.0f) pokeScene(scene, 0.02, c.pokeDepthMm);
-  auto image = [&](subsurface::EntryMode entry, int samples, bool jitter) {
-    subsurface::CpuImageSettings s;
-    s.width = o.width;
-    s.height = o.height;
-    s.entry = entry;
-    s.jitter = jitter;
-    s.march.samples = samples;
-    s.march.attenuationThreshold = 0.0f;
-    return subsurface::renderSingleScatteringCpu(meshView(scene), scene.material.stack, scene.lights,
-                                                 pinholeOf(scene.camera), s);
-  };
-  const auto ref = image(subsurface::EntryMode::Mesh, o.referenceSamples, false);
-  const auto planes = image(subsurface::EntryMode::Planes, o.referenceSamples, false);
-  const auto few = image(subsurface::EntryMode::Planes, 10, true);
-  const Image8 refImage = subsurface::toDisplay(ref, kRayMarchRadianceScale, kRayMarchBackground);
-  const Image8 planesImage = subsurface::toDisplay(planes, kRayMarchRadianceScale, kRayMarchBackground);
-  const Image8 fewImage = subsurface::toDisplay(few, kRayMarchRadianceScale, kRayMarchBackground);
+  studies::RayMarchStudyConfig config;
+  config.width = o.width;
+  config.height = o.height;
+  config.referenceSamples = o.referenceSamples;
+  config.radianceScale = kRayMarchRadianceScale;
+  config.background = kRayMarchBackground;
+  const studies::RayMarchStudy r = studies::studyRayMarch(meshView(scene), scene.material.stack, scene.lights,
+                                                          pinholeOf(scene.camera), config);
   nlohmann::json row;
   row["case"] = c.name;
   row["what"] = c.what;
-  row["plane_rms"] = subsurface::displayRms(planesImage, refImage, ref.covered);
-  row["plane_rms_grazing"] = rmsWhere(planesImage, refImage, ref, -1.0f, 0.3f);
-  row["plane_rms_frontal"] = rmsWhere(planesImage, refImage, ref, 0.7f, 2.0f);
-  row["samples10_rms"] = subsurface::displayRms(fewImage, refImage, ref.covered);
-  row["samples10_rms_grazing"] = rmsWhere(fewImage, refImage, ref, -1.0f, 0.3f);
-  row["samples10_rms_frontal"] = rmsWhere(fewImage, refImage, ref, 0.7f, 2.0f);
+  row["plane_rms"] = r.planes.all;
+  row["plane_rms_grazing"] = r.planes.grazing;
+  row["plane_rms_frontal"] = r.planes.frontal;
+  row["samples10_rms"] = r.few.all;
+  row["samples10_rms_grazing"] = r.few.grazing;
+  row["samples10_rms_frontal"] = r.few.frontal;
   if (!o.images.empty()) {
     const std::filesystem::path dir = o.images;
     const std::string stem = std::string("raymarch_fail_") + c.name;
     for (auto [suffix, img] :
-         {std::pair{"_reference.png", &refImage}, std::pair{"_10samples.png", &fewImage}})
+         {std::pair{"_reference.png", &r.reference}, std::pair{"_10samples.png", &r.fewImage}})
       if (auto w = writePng(dir / (stem + suffix), *img); !w) return w.error();
-    if (auto w = writePng(dir / (stem + "_plane_error_x8.png"), errorImage(planesImage, refImage)); !w)
+    if (auto w = writePng(dir / (stem + "_plane_error_x8.png"),
+                          studies::differenceImage(r.planesImage, r.reference));
+        !w)
       return w.error();
   }
   return row;

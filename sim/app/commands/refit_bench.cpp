@@ -2,23 +2,19 @@
 // after a local poke and after a global deformation, with the largest deviation between them;
 // with --scenario, frame by frame under the simulator, exact against tolerant (issue 11).
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <iostream>
 
 #include "command.h"
-#include "deformations.h"
 #include "organ_data.h"
 #include "output.h"
-#include "tissue/core/statistics.h"
-#include "tissue/core/stopwatch.h"
 #include "tissue/core/vec_math.h"
 #include "tissue/mesh/deformable_surface.h"
 #include "tissue/mesh/load_mesh.h"
 #include "tissue/mesh/local_planes.h"
 #include "tissue/mesh/vertex_normals.h"
 #include "tissue/scenario/scenario.h"
-#include "tissue/scenario/scenario_run.h"
+#include "tissue/studies/deformations.h"
+#include "tissue/studies/refit_study.h"
 
 namespace tissue::sim_app {
 namespace {
@@ -35,81 +31,36 @@ struct BenchOptions {
   int repeats = 0;  // 0: choose from the mesh size
 };
 
-double median(const std::vector<double>& v) {
-  return quantile(v, 0.5);
-}
-
-/// Times full and incremental re-fits between the rest state and `deformed`, alternating so
-/// each incremental update moves the same vertices; returns the figures as JSON.
+/// The re-fit comparison between the rest state and `deformed` as JSON.
 nlohmann::json measure(std::span<const Float3> rest, std::span<const Float3> deformed,
                        std::span<const Triangle> tris, const mesh::PlaneFitSettings& settings, int repeats,
                        const mesh::PlaneRefitSettings& refit) {
-  std::vector<Float3> restNormals(rest.size()), defNormals(rest.size());
-  mesh::computeVertexNormals(rest, tris, restNormals);
-  mesh::computeVertexNormals(deformed, tris, defNormals);
-  mesh::IncrementalPlaneFitter fitter(rest, tris, settings), tolerant(rest, tris, settings);
-  fitter.fitAll(rest, restNormals);
-  tolerant.fitAll(rest, restNormals);
-  std::vector<Float4> full(rest.size());
-  std::vector<double> fullMs, incMs, tolMs;
-  mesh::RefitStats stats, tolStats;
-  double worstAngle = 0.0, worstOffset = 0.0, tolAngle = 0.0, tolOffset = 0.0;
-  for (int r = 0; r < repeats; ++r) {
-    Stopwatch clock;
-    mesh::fitVertexPlanes(deformed, defNormals, fitter.neighbourhoods(), full);
-    fullMs.push_back(clock.elapsedMs());
-    clock.restart();
-    stats = fitter.update(deformed, defNormals);
-    incMs.push_back(clock.elapsedMs());
-    clock.restart();
-    tolStats = tolerant.update(deformed, defNormals, refit);
-    tolMs.push_back(clock.elapsedMs());
-    const auto dev = mesh::comparePlanes(fitter.planes(), full);
-    worstAngle = std::max(worstAngle, dev.maxAngleRad);
-    worstOffset = std::max(worstOffset, dev.maxOffsetMm);
-    const auto tdev = mesh::comparePlanes(tolerant.planes(), full);
-    tolAngle = std::max(tolAngle, tdev.maxAngleRad);
-    tolOffset = std::max(tolOffset, tdev.maxOffsetMm);
-    fitter.update(rest, restNormals);  // back to rest (same vertices move), untimed
-    tolerant.update(rest, restNormals, refit);
-  }
-  const double f = median(fullMs), i = median(incMs);
+  const studies::RefitComparison c = studies::compareRefits(rest, deformed, tris, settings, repeats, refit);
   nlohmann::json out;
-  out["moved_fraction"] = double(stats.movedVertices) / double(rest.size());
-  out["refitted_fraction"] = double(stats.refittedPlanes) / double(rest.size());
-  out["full_refit_ms"] = f;
-  out["incremental_refit_ms"] = i;
-  out["speedup"] = f / std::max(i, 1e-9);
-  out["max_normal_deviation_rad"] = worstAngle;
-  out["max_offset_deviation_mm"] = worstOffset;
+  out["moved_fraction"] = c.movedFraction;
+  out["refitted_fraction"] = c.exact.refittedFraction;
+  out["full_refit_ms"] = c.fullRefitMs;
+  out["incremental_refit_ms"] = c.exact.refitMs;
+  out["speedup"] = c.speedup();
+  out["max_normal_deviation_rad"] = c.exact.maxNormalDeviationRad;
+  out["max_offset_deviation_mm"] = c.exact.maxOffsetDeviationMm;
   out["tolerant"] = {{"max_normal_error_rad", refit.maxNormalErrorRad},
-                     {"refitted_fraction", double(tolStats.refittedPlanes) / double(rest.size())},
-                     {"refit_ms", median(tolMs)},
-                     {"max_normal_deviation_rad", tolAngle},
-                     {"max_offset_deviation_mm", tolOffset}};
+                     {"refitted_fraction", c.tolerant.refittedFraction},
+                     {"refit_ms", c.tolerant.refitMs},
+                     {"max_normal_deviation_rad", c.tolerant.maxNormalDeviationRad},
+                     {"max_offset_deviation_mm", c.tolerant.maxOffsetDeviationMm}};
   return out;
 }
 
-/// Per-frame figures of one DeformableSurface under the simulator.
-struct SeriesStats {
-  std::vector<double> planesMs;
-  double refitted = 0.0;  // sum of per-frame fractions
-  double maxAngle = 0.0, maxOffset = 0.0;
-  void add(const mesh::SurfaceUpdateStats& u, std::size_t vertices, const mesh::PlaneDeviation& d) {
-    planesMs.push_back(u.planesMs);
-    refitted += double(u.refit.refittedPlanes) / double(vertices);
-    maxAngle = std::max(maxAngle, d.maxAngleRad), maxOffset = std::max(maxOffset, d.maxOffsetMm);
-  }
-  nlohmann::json json(double refitRad) const {
-    return {{"max_normal_error_rad", refitRad},
-            {"mean_refitted_fraction", refitted / double(std::max<std::size_t>(planesMs.size(), 1))},
-            {"planes_ms_median", quantile(planesMs, 0.5)},
-            {"planes_ms_p99", quantile(planesMs, 0.99)},
-            {"planes_ms_max", quantile(planesMs, 1.0)},
-            {"max_normal_deviation_rad", maxAngle},
-            {"max_offset_deviation_mm", maxOffset}};
-  }
-};
+nlohmann::json seriesJson(const studies::RefitSeries& r) {
+  return {{"max_normal_error_rad", r.maxNormalErrorRad},
+          {"mean_refitted_fraction", r.meanRefittedFraction},
+          {"planes_ms_median", r.planesMsMedian},
+          {"planes_ms_p99", r.planesMsP99},
+          {"planes_ms_max", r.planesMsMax},
+          {"max_normal_deviation_rad", r.maxNormalDeviationRad},
+          {"max_offset_deviation_mm", r.maxOffsetDeviationMm}};
+}
 
 /// The simulator drives two surfaces, the exact re-fit (bound 0) and the tolerant one; each
 /// frame both are compared with a full re-fit of the simulated positions.
@@ -125,80 +76,30 @@ int runScenario(const BenchOptions& o, const GlobalOptions& global) {
   auto material = readDataMaterial(materialFileFor(parsed->mesh));
   const mesh::PlaneFitSettings settings{
       .sigma_t = material ? scene::firstLayerMinSigmaT(*material) : o.sigma_t, .epsilon = o.epsilon};
-  auto exact = mesh::DeformableSurface::create(*loaded, settings, 0, {.maxNormalErrorRad = 0.0});
-  if (!exact) return fail("refit-bench", exact.error().message);
-  auto tolerant =
-      mesh::DeformableSurface::create(*loaded, settings, 0, {.maxNormalErrorRad = o.maxNormalErrorRad});
-  if (!tolerant) return fail("refit-bench", tolerant.error().message);
-  auto run = scenario::ScenarioRun::create(*parsed);
-  if (!run) return fail("refit-bench", run.error().message);
-  const std::size_t n = exact->geometricRestPositions().size();
-  if ((*run)->mesh().positions.size() != n)
-    return fail("refit-bench", o.scenarioFile + ": the simulated mesh has " +
-                                   std::to_string((*run)->mesh().positions.size()) +
-                                   " vertices but the shaded one " + std::to_string(n));
-  const auto tris = exact->geometricTriangles();
-  std::vector<Float3> previous(exact->geometricRestPositions().begin(),
-                               exact->geometricRestPositions().end());
-  std::vector<Float3> normals(n);
-  std::vector<Float4> full(n);
-  SeriesStats before, after;
-  std::vector<double> normalsMs, tangentsMs, fullMs;
-  double changed = 0.0;  // vertices whose position changed at all, summed fractions
-  // How far vertices move per frame: the fraction beyond each step (mm), summed over frames.
-  constexpr std::array<float, 5> kSteps = {1e-5f, 1e-4f, 1e-3f, 1e-2f, 1e-1f};
-  std::array<double, kSteps.size()> stepAbove{};
-  for (int frame = 0; frame < parsed->frames; ++frame) {
-    auto metrics = (*run)->advance();
-    if (!metrics) return fail("refit-bench", metrics.error().message);
-    const std::vector<Float3> positions = (*run)->positions();
-    std::size_t moved = 0;
-    for (std::size_t v = 0; v < n; ++v) {
-      moved += positions[v] == previous[v] ? 0 : 1;
-      const Float3 d{positions[v].x - previous[v].x, positions[v].y - previous[v].y,
-                     positions[v].z - previous[v].z};
-      const float len = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-      for (std::size_t k = 0; k < kSteps.size(); ++k)
-        stepAbove[k] += len > kSteps[k] ? 1.0 / double(n) : 0.0;
-    }
-    changed += double(moved) / double(n);
-    previous = positions;
-    const auto ue = exact->update(positions);
-    const auto ut = tolerant->update(positions);
-    normalsMs.push_back(ut.normalsMs), tangentsMs.push_back(ut.tangentsMs);
-    // The reference: a full re-fit of the simulated positions with their normals.
-    Stopwatch clock;
-    mesh::computeVertexNormals(positions, tris, normals);
-    mesh::fitVertexPlanes(positions, normals, exact->planeFitter().neighbourhoods(), full);
-    fullMs.push_back(clock.elapsedMs());
-    before.add(ue, n, mesh::comparePlanes(exact->planeFitter().planes(), full));
-    after.add(ut, n, mesh::comparePlanes(tolerant->planeFitter().planes(), full));
+  auto study =
+      studies::studyRefitUnderScenario(*parsed, *loaded, settings, o.maxNormalErrorRad, parsed->frames);
+  if (!study) {
+    const std::string& m = study.error().message;
+    return fail("refit-bench", m.rfind("the simulated mesh", 0) == 0 ? o.scenarioFile + ": " + m : m);
   }
-  const double frames = std::max(parsed->frames, 1);
   nlohmann::json out;
   out["scenario"] = o.scenarioFile;
   out["mesh"] = parsed->mesh.string();
-  out["vertices"] = n;
-  out["frames"] = parsed->frames;
+  out["vertices"] = study->vertices;
+  out["frames"] = study->frames;
   out["radius_mm"] = settings.radiusMm();
-  out["mean_changed_vertex_fraction"] = changed / frames;
+  out["mean_changed_vertex_fraction"] = study->meanChangedVertexFraction;
   nlohmann::json steps = nlohmann::json::object();
-  for (std::size_t k = 0; k < kSteps.size(); ++k)
-    steps[std::to_string(kSteps[k]) + "_mm"] = stepAbove[k] / frames;
+  for (std::size_t k = 0; k < studies::kRefitMotionStepsMm.size(); ++k)
+    steps[std::to_string(studies::kRefitMotionStepsMm[k]) + "_mm"] = study->meanFractionBeyond[k];
   out["mean_fraction_moving_per_frame_beyond"] = steps;
-  {
-    const double theta = o.maxNormalErrorRad;
-    std::vector<double> tol;
-    for (float t : tolerant->planeFitter().toleranceMmPerRad())
-      tol.push_back(theta * double(t));
-    out["plane_tolerance_mm"] = {
-        {"p10", quantile(tol, 0.1)}, {"median", quantile(tol, 0.5)}, {"p90", quantile(tol, 0.9)}};
-  }
-  out["normals_ms_median"] = median(normalsMs);
-  out["tangents_ms_median"] = median(tangentsMs);
-  out["full_refit_ms_median"] = median(fullMs);
-  out["exact"] = before.json(0.0);
-  out["tolerant"] = after.json(o.maxNormalErrorRad);
+  out["plane_tolerance_mm"] = {
+      {"p10", study->toleranceMmP10}, {"median", study->toleranceMmMedian}, {"p90", study->toleranceMmP90}};
+  out["normals_ms_median"] = study->normalsMsMedian;
+  out["tangents_ms_median"] = study->tangentsMsMedian;
+  out["full_refit_ms_median"] = study->fullRefitMsMedian;
+  out["exact"] = seriesJson(study->exact);
+  out["tolerant"] = seriesJson(study->tolerant);
   printResult(global, out);
   return 0;
 }
@@ -227,8 +128,8 @@ int run(const BenchOptions& o, const GlobalOptions& global) {
   const Float3 lo = box.lo, hi = box.hi;
   const float size = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
   std::vector<Float3> poked(rest.size()), bent(rest.size());
-  applyPoke(rest, normals, topVertex(rest), o.pokeFraction, 0.03f * size, poked);
-  applyGlobalBend(rest, 0.05f * size, bent);
+  studies::applyPoke(rest, normals, studies::topVertex(rest), o.pokeFraction, 0.03f * size, poked);
+  studies::applyGlobalBend(rest, 0.05f * size, bent);
   const int repeats = o.repeats > 0 ? o.repeats : int(std::clamp<std::size_t>(2000000 / rest.size(), 5, 200));
 
   nlohmann::json out = measure(rest, poked, tris, settings, repeats, refit);

@@ -14,138 +14,45 @@
 #include "output.h"
 #include "sim_bench.h"
 #include "tissue/core/stopwatch.h"
-#include "tissue/sim/forces.h"
 #include "tissue/sim/integrators.h"
-#include "tissue/sim/mass.h"
-#include "tissue/sim/spring_network.h"
+#include "tissue/studies/sim_bench.h"
 
 namespace tissue::sim_app {
 namespace {
 
-constexpr double kFrameTime = 1.0 / 60.0;  ///< s
-constexpr double kBudgetMs = 300.0;        ///< timing budget per integrator and size
-constexpr int kMaxTimedSteps = 200;
+constexpr double kFrameTime = studies::IntegratorBenchConfig{}.frameTimeS;  ///< s
 /// Largest patch the fast solver is run on: the sparse Cholesky factor's fill (AMD ordering)
 /// grows about as n^1.5 on these grids: 4.5 million entries at 10^5 springs, over 10^8 (more
 /// than a gigabyte, minutes to factor) at 10^6.
 constexpr std::size_t kFastSolverMaxSprings = 300000;
 
-/// A square patch, 1 mm spacing, of about `targetSprings` springs (edge and bending springs,
-/// about 6 per vertex): 0.1 N/mm edges, 0.02 N/mm bending, 1e-6 N*s/mm spring damping,
-/// 1e-3 g/mm^2 (1 mm of 1 g/cm^3), Rayleigh alpha 1 /s, gravity, the x = 0 column pinned.
-struct BenchPatch {
-  sim::MassSpringSystem system;
-  sim::State rest;
-};
-
-Result<BenchPatch> makePatch(std::size_t targetSprings, int threads) {
-  const int side = static_cast<int>(std::lround(std::sqrt(double(targetSprings) / 6.0))) + 1;
-  std::vector<Float3> positions;
-  std::vector<Triangle> triangles;
-  for (int y = 0; y < side; ++y)
-    for (int x = 0; x < side; ++x)
-      positions.push_back({float(x), float(y), 0.0f});
-  auto id = [side](int x, int y) { return static_cast<std::uint32_t>(y * side + x); };
-  std::vector<std::uint32_t> pinned;
-  for (int y = 0; y < side; ++y) {
-    pinned.push_back(id(0, y));
-    for (int x = 0; y + 1 < side && x + 1 < side; ++x) {
-      triangles.push_back({id(x, y), id(x + 1, y), id(x + 1, y + 1)});
-      triangles.push_back({id(x, y), id(x + 1, y + 1), id(x, y + 1)});
-    }
-  }
-  auto springs = sim::buildSurfaceSprings(positions, triangles,
-                                          {.stiffness = 0.1, .bendingStiffness = 0.02, .damping = 1e-6});
-  if (!springs) return springs.error();
-  auto masses = sim::computeMasses(positions, triangles, {.total = 0.0, .arealDensity = 1e-3});
-  if (!masses) return masses.error();
-  auto system = sim::makeSystem(std::move(*springs), std::move(*masses), pinned,
-                                {.rayleighMass = 1.0, .threads = threads});
-  if (!system) return system.error();
-  return BenchPatch{std::move(*system), sim::restState(positions)};
-}
-
-}  // namespace
-
-double omegaBound(const sim::MassSpringSystem& system) {
-  const sim::SpringNetwork& s = system.springs;
-  std::vector<double> row(system.vertexCount(), 0.0);
-  for (std::size_t e = 0; e < s.size(); ++e) {
-    const double mi = system.masses[s.i[e]], mj = system.masses[s.j[e]];
-    row[s.i[e]] += s.stiffness[e] * (1.0 / mi + 1.0 / std::sqrt(mi * mj));
-    row[s.j[e]] += s.stiffness[e] * (1.0 / mj + 1.0 / std::sqrt(mi * mj));
-  }
-  return std::sqrt(*std::max_element(row.begin(), row.end()));
-}
-
-namespace {
-
-/// The median and the smallest of `times` (ms).
-std::pair<double, double> medianAndMin(std::vector<double> times) {
-  std::sort(times.begin(), times.end());
-  const std::size_t n = times.size();
-  const double median = n % 2 ? times[n / 2] : 0.5 * (times[n / 2 - 1] + times[n / 2]);
-  return {median, times.front()};
-}
-
-/// Times steps of `integrator` at step h from rest, after one untimed step (which factors the
-/// fast solver's matrix and warms the conjugate gradients).
-nlohmann::json timeIntegrator(sim::Integrator integrator, const BenchPatch& patch, double h) {
-  const sim::ImplicitSolverConfig solver{.maxIterations = 100, .relativeTolerance = 1e-6};
-  sim::State state = patch.rest;
-  sim::StepWorkspace ws;
-  const sim::StepStats first = sim::step(integrator, patch.system, state, h, ws, solver);
-  // Per-step times; the median and the best resist the noise of a shared machine.
-  std::vector<double> times;
-  long cg = 0;
-  Stopwatch clock;
-  while (int(times.size()) < kMaxTimedSteps && (times.empty() || clock.elapsedMs() < kBudgetMs)) {
-    Stopwatch one;
-    cg += sim::step(integrator, patch.system, state, h, ws, solver).cgIterations;
-    times.push_back(one.elapsedMs());
-  }
-  const int steps = static_cast<int>(times.size());
-  const auto [msPerStep, bestMs] = medianAndMin(times);
-  const int substeps = std::max(1, static_cast<int>(std::ceil(kFrameTime / h - 1e-9)));
+nlohmann::json integratorJson(const studies::IntegratorTiming& t) {
   nlohmann::json r;
-  r["integrator"] = sim::integratorName(integrator);
-  r["springs"] = patch.system.springs.size();
-  r["vertices"] = patch.system.vertexCount();
-  r["ms_per_step"] = msPerStep;
-  r["springs_per_second"] = double(patch.system.springs.size()) / (msPerStep * 1e-3);
-  r["h_s"] = h;
-  r["substeps_per_frame"] = substeps;
-  r["ms_per_frame"] = msPerStep * substeps;
-  r["ms_per_step_best"] = bestMs;
-  r["steps_timed"] = steps;
-  if (integrator == sim::Integrator::ImplicitEuler) r["cg_iterations_mean"] = double(cg) / steps;
-  if (integrator == sim::Integrator::FastMassSpring) {
-    r["factor_ms_once"] = first.factorMs;
-    r["local_global_iterations"] = solver.localGlobalIterations;
+  r["integrator"] = sim::integratorName(t.integrator);
+  r["springs"] = t.springs;
+  r["vertices"] = t.vertices;
+  r["ms_per_step"] = t.msPerStep;
+  r["springs_per_second"] = t.springsPerSecond();
+  r["h_s"] = t.stepS;
+  r["substeps_per_frame"] = t.substepsPerFrame;
+  r["ms_per_frame"] = t.msPerFrame();
+  r["ms_per_step_best"] = t.msPerStepBest;
+  r["steps_timed"] = t.stepsTimed;
+  if (t.integrator == sim::Integrator::ImplicitEuler) r["cg_iterations_mean"] = t.cgIterationsMean;
+  if (t.integrator == sim::Integrator::FastMassSpring) {
+    r["factor_ms_once"] = t.factorMsOnce;
+    r["local_global_iterations"] = t.localGlobalIterations;
   }
   return r;
 }
 
-/// The force pass alone (springs with damping, gravity, Rayleigh) at `threads` threads.
-nlohmann::json timeForcePass(BenchPatch& patch, int threads) {
-  patch.system.config.threads = threads;
-  std::vector<sim::Vec3d> forces(patch.system.vertexCount());
-  sim::ForceScratch scratch;
-  sim::computeForces(patch.system, patch.rest.x, patch.rest.v, forces, scratch);
-  std::vector<double> times;
-  Stopwatch clock;
-  while (times.size() < 1000 && (times.size() < 5 || clock.elapsedMs() < 200.0)) {
-    Stopwatch one;
-    sim::computeForces(patch.system, patch.rest.x, patch.rest.v, forces, scratch);
-    times.push_back(one.elapsedMs());
-  }
-  const auto [ms, bestMs] = medianAndMin(times);
-  return {{"springs", patch.system.springs.size()},
-          {"threads", threads},
-          {"ms", ms},
-          {"ms_best", bestMs},
-          {"springs_per_second", double(patch.system.springs.size()) / (ms * 1e-3)},
-          {"springs_per_second_best", double(patch.system.springs.size()) / (bestMs * 1e-3)}};
+nlohmann::json forcePassJson(const studies::ForcePassTiming& t) {
+  return {{"springs", t.springs},
+          {"threads", t.threads},
+          {"ms", t.ms},
+          {"ms_best", t.msBest},
+          {"springs_per_second", t.springsPerSecond()},
+          {"springs_per_second_best", t.springsPerSecondBest()}};
 }
 
 void printText(const nlohmann::json& out) {
@@ -253,12 +160,12 @@ void registerSimBenchCommand(CLI::App& app, const GlobalOptions& global, int& ex
     for (std::size_t target :
          {std::size_t{1000}, std::size_t{10000}, std::size_t{100000}, std::size_t{1000000}}) {
       if (target > o->maxSprings) break;
-      auto patch = makePatch(target, o->threads);
+      auto patch = studies::makeBenchPatch(target, o->threads);
       if (!patch) {
         exitCode = fail("sim-bench", patch.error().message);
         return;
       }
-      const double explicitH = 0.9 * 2.0 / omegaBound(patch->system);
+      const double explicitH = 0.9 * 2.0 / studies::omegaBound(patch->system);
       for (sim::Integrator integrator :
            {sim::Integrator::ExplicitEuler, sim::Integrator::SymplecticEuler, sim::Integrator::VelocityVerlet,
             sim::Integrator::ImplicitEuler, sim::Integrator::FastMassSpring}) {
@@ -273,10 +180,12 @@ void registerSimBenchCommand(CLI::App& app, const GlobalOptions& global, int& ex
                                     {"skipped", "factor too large for this machine (fill grows as n^1.5)"}});
           continue;
         }
-        out["results"].push_back(timeIntegrator(integrator, *patch, implicit ? kFrameTime : explicitH));
+        out["results"].push_back(
+            integratorJson(studies::timeIntegrator(integrator, *patch, implicit ? kFrameTime : explicitH)));
       }
-      out["force_pass"].push_back(timeForcePass(*patch, 1));
-      if (o->threads > 1) out["force_pass"].push_back(timeForcePass(*patch, o->threads));
+      out["force_pass"].push_back(forcePassJson(studies::timeForcePass(*patch, 1)));
+      if (o->threads > 1)
+        out["force_pass"].push_back(forcePassJson(studies::timeForcePass(*patch, o->threads)));
     }
     if (!o->skipFramePath) {
       const auto mesh = o->mesh.empty() ? dataDir() / "meshes" / "liver.obj" : std::filesystem::path(o->mesh);

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "deformations.h"
 #include "organ_data.h"
 #include "sim_bench.h"
 #include "tissue/core/stopwatch.h"
@@ -14,6 +13,8 @@
 #include "tissue/sim/integrators.h"
 #include "tissue/sim/mass.h"
 #include "tissue/sim/spring_network.h"
+#include "tissue/studies/deformations.h"
+#include "tissue/studies/sim_bench.h"
 
 namespace tissue::sim_app {
 namespace {
@@ -68,7 +69,7 @@ Result<nlohmann::json> measureFramePath(const FramePathOptions& o) {
     // Released from a poke: the top 5% pushed in 8 mm, then let go.
     std::vector<Float3> normals(rest.size()), poked(rest.size());
     mesh::computeVertexNormals(rest, surface->geometricTriangles(), normals);
-    applyPoke(rest, normals, topVertex(rest), kPokeFraction, kPokeDepth, poked);
+    studies::applyPoke(rest, normals, studies::topVertex(rest), kPokeFraction, kPokeDepth, poked);
     sim::State state = sim::restState(poked);
     for (std::size_t v = 0; v < rest.size(); ++v)
       if (system->invMasses[v] == 0.0) state.x[v] = {rest[v].x, rest[v].y, rest[v].z};
@@ -76,9 +77,10 @@ Result<nlohmann::json> measureFramePath(const FramePathOptions& o) {
     const sim::ImplicitSolverConfig solver{.maxIterations = 100, .relativeTolerance = 1e-6};
     (void)surface->update(sim::toFloat3(state.x));
     // Explicit: substeps at 0.9 of the stability bound 2/omega_max; implicit: one step a frame.
-    const int substeps = integrator == sim::Integrator::SymplecticEuler
-                             ? static_cast<int>(std::ceil(kFrameTime / (0.9 * 2.0 / omegaBound(*system))))
-                             : 1;
+    const int substeps =
+        integrator == sim::Integrator::SymplecticEuler
+            ? static_cast<int>(std::ceil(kFrameTime / (0.9 * 2.0 / studies::omegaBound(*system))))
+            : 1;
 
     double stepMs = 0, gatherMs = 0, normalsMs = 0, planesMs = 0, tangentsMs = 0, refitted = 0, factorMs = 0;
     int stepFrames = 0;

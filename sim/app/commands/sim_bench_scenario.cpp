@@ -7,6 +7,7 @@
 #include "sim_bench.h"
 #include "tissue/core/statistics.h"
 #include "tissue/scenario/scenario_run.h"
+#include "tissue/studies/sim_bench.h"
 
 namespace tissue::sim_app {
 namespace {
@@ -58,7 +59,7 @@ Result<nlohmann::json> measureScenario(const ScenarioBenchOptions& o) {
   out["max_force_N"] = maxForce;
   out["max_factor_ms"] = maxFactor;
   if (!graspFrames.empty()) out["refactor_frame_ms_max"] = quantile(graspFrames, 1.0);
-  out["explicit_limit_ms"] = 2.0e3 / omegaBound(system);  // 2 / omega_max (Gershgorin), ms
+  out["explicit_limit_ms"] = 2.0e3 / studies::omegaBound(system);  // 2 / omega_max (Gershgorin), ms
   return out;
 }
 

@@ -1,4 +1,4 @@
-#include "deformations.h"
+#include "tissue/studies/deformations.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "tissue/core/vec_math.h"
 
-namespace tissue::sim_app {
+namespace tissue::studies {
 
 std::vector<std::uint32_t> applyPoke(std::span<const Float3> rest, std::span<const Float3> normals,
                                      std::uint32_t centerVertex, double fraction, float depthMm,
@@ -56,4 +56,4 @@ std::uint32_t topVertex(std::span<const Float3> positions) {
                        positions.begin());
 }
 
-}  // namespace tissue::sim_app
+}  // namespace tissue::studies

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Procedural deformations for benchmarks and the demo scenario, until the mass-spring
-/// simulator (issue 3) drives the mesh: a local poke and a smooth global bend.
+/// Procedural deformations for the benchmarks (re-fit, ray-march, frame path): a local poke and a
+/// smooth global bend, deterministic, so a bench moves the same vertices on every run. GL-free.
 
 #include <cstdint>
 #include <span>
@@ -9,7 +9,7 @@
 
 #include "tissue/core/types.h"
 
-namespace tissue::sim_app {
+namespace tissue::studies {
 
 /// A poke: the `fraction` of vertices nearest to `centerVertex` (Euclidean, rest state) are
 /// pushed along -normal by up to `depthMm` with a smooth (cosine) falloff to zero at the edge
@@ -26,4 +26,4 @@ void applyGlobalBend(std::span<const Float3> rest, float amplitudeMm, std::span<
 /// The vertex farthest along +z (a deterministic, visible poke site for a camera above).
 std::uint32_t topVertex(std::span<const Float3> positions);
 
-}  // namespace tissue::sim_app
+}  // namespace tissue::studies

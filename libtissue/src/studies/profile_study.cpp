@@ -1,0 +1,102 @@
+// The profile choice: Monte Carlo, dipole, multipole and Burley on one grid.
+#include "tissue/studies/profile_study.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "tissue/optics/burley.h"
+#include "tissue/optics/dipole.h"
+#include "tissue/optics/multipole.h"
+
+namespace tissue::studies {
+namespace {
+
+// Times `evaluate` (the whole radial profile) over repeats for at least 20 ms; seconds per call.
+template <class F>
+double timeEvaluation(F&& evaluate) {
+  const auto start = std::chrono::steady_clock::now();
+  int repeats = 0;
+  double elapsed = 0;
+  do {
+    evaluate();
+    ++repeats;
+    elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  } while (elapsed < 0.02);
+  return elapsed / repeats;
+}
+
+}  // namespace
+
+std::optional<ProfileMethod> parseProfileMethod(std::string_view name) {
+  if (name == "mc") return ProfileMethod::MonteCarlo;
+  if (name == "dipole") return ProfileMethod::Dipole;
+  if (name == "multipole") return ProfileMethod::Multipole;
+  if (name == "burley") return ProfileMethod::Burley;
+  return std::nullopt;
+}
+
+AnalyticLayer analyticLayer(const optics::LayeredMedium& m) {
+  const auto& l = m.layers[0];
+  return {l.mua, l.mus * (1.0 - l.g), l.n / m.ambientAbove, l.thickness};
+}
+
+double defaultProfileRadiusMm(const optics::LayeredMedium& m) {
+  const auto a = analyticLayer(m);
+  const double sigmaTPrime = a.sigmaA + a.sigmaSPrime;
+  const double sigmaTr = std::sqrt(3.0 * a.sigmaA * sigmaTPrime);
+  return sigmaTr > 0 ? std::min(6.0 / sigmaTr, 30.0 / sigmaTPrime) : 30.0 / sigmaTPrime;
+}
+
+bool multipoleUnreliable(const optics::LayeredMedium& m) {
+  const auto a = analyticLayer(m);
+  return m.layers[0].thickness < 1.0 / (a.sigmaA + a.sigmaSPrime);
+}
+
+Result<ChannelProfile> profileChannel(const optics::LayeredMedium& medium, const optics::RadialGrid& grid,
+                                      const ProfileConfig& config) {
+  if (medium.layers.empty()) return Error{"the medium has no layers"};
+  ChannelProfile out;
+  if (config.method == ProfileMethod::MonteCarlo) {
+    optics::MonteCarloSettings s;
+    s.photons = config.photons;
+    s.seed = config.seed;
+    s.threads = config.threads;
+    s.grid = grid;
+    s.onProgress = config.onProgress;
+    auto r = optics::simulateMonteCarlo(medium, s);
+    if (!r) return r.error();
+    return ChannelProfile{r->rd,       r->rdStderr, r->tt,      r->ttStderr, r->specular,
+                          r->rdRadial, r->seconds,  r->photons, r->threads};
+  }
+  const auto a = analyticLayer(medium);
+  const double r0 = (medium.ambientAbove - medium.layers[0].n) / (medium.ambientAbove + medium.layers[0].n);
+  out.specular = r0 * r0;
+  out.rdRadial.resize(static_cast<std::size_t>(std::max(grid.bins, 0)));
+  std::function<double(double)> profile;
+  if (config.method == ProfileMethod::Dipole ||
+      (config.method == ProfileMethod::Multipole && std::isinf(a.thicknessMm))) {
+    const auto d = optics::makeDipole(a.sigmaA, a.sigmaSPrime, a.eta);
+    out.rd = optics::dipoleTotalRd(d);
+    profile = [d](double r) { return optics::dipoleRd(d, r); };
+  } else if (config.method == ProfileMethod::Multipole) {
+    const auto m = optics::makeMultipole(a.sigmaA, a.sigmaSPrime, a.eta, a.thicknessMm);
+    out.rd = optics::multipoleTotalR(m);
+    out.tt = optics::multipoleTotalT(m);
+    profile = [m](double r) { return optics::multipoleR(m, r); };
+  } else {
+    const double albedo = optics::dipoleTotalRd(optics::makeDipole(a.sigmaA, a.sigmaSPrime, a.eta));
+    const double d =
+        1.0 / (a.sigmaA + a.sigmaSPrime) / optics::burleyScaling(albedo, optics::BurleyFit::SearchlightMfp);
+    out.rd = albedo;
+    profile = [d, albedo](double r) { return optics::burleyProfile(r, d, albedo); };
+  }
+  auto evaluate = [&] {
+    for (int i = 0; i < grid.bins; ++i)
+      out.rdRadial[static_cast<std::size_t>(i)] = profile(grid.radius(i));
+  };
+  out.seconds = timeEvaluation(evaluate);
+  return out;
+}
+
+}  // namespace tissue::studies
