@@ -12,7 +12,7 @@ namespace {
 class ContextTest : public ::testing::TestWithParam<Backend> {};
 
 TEST_P(ContextTest, CreatesCoreContextWithInfo) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   const context::ContextInfo& info = context->info();
   EXPECT_EQ(info.backend, backendName(GetParam()));
   EXPECT_FALSE(info.vendor.empty());
@@ -34,8 +34,8 @@ INSTANTIATE_TEST_SUITE_P(Backends, ContextTest, ::testing::Values(Backend::Egl, 
 
 // EGL (through glvnd) and OSMesa both export gl* symbols; each context must resolve its own.
 TEST(ContextTest, EglAndOsMesaLiveInOneProcessWithTheirOwnEntryPoints) {
-  TISSUE_CONTEXT_OR_SKIP(egl, Backend::Egl);
-  TISSUE_CONTEXT_OR_SKIP(osmesa, Backend::OsMesa);
+  TISSUE_CONTEXT_OR_FAIL(egl, Backend::Egl);
+  TISSUE_CONTEXT_OR_FAIL(osmesa, Backend::OsMesa);
   ASSERT_TRUE(osmesa->makeCurrent());
   EXPECT_NE(reinterpret_cast<void*>(osmesa->getProcAddress("glGetString")),
             reinterpret_cast<void*>(egl->getProcAddress("glGetString")));
@@ -71,7 +71,7 @@ TEST(HeadlessContextTest, TheLibraryNeverReadsTheEnvironment) {
 TEST(HeadlessContextTest, DefaultIsEglOrOsMesa) {
   ::unsetenv("TISSUE_GL_CONTEXT");
   auto context = context::createHeadlessContext({}, {.backend = "", .log = false});
-  if (!context) GTEST_SKIP() << "no headless context: " << context.error().message;
+  if (!context) GTEST_FAIL() << "no headless context: " << context.error().message;
   const std::string backend = (*context)->info().backend;
   EXPECT_TRUE(backend == "egl" || backend == "osmesa") << backend;
 }

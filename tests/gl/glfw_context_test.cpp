@@ -11,7 +11,7 @@ TEST(GlfwContextTest, CreatesHiddenWindowWithCoreContext) {
   request.width = 64;
   request.height = 64;
   auto context = context::createGlfwContext(request);
-  if (!context) GTEST_SKIP() << "glfw context unavailable: " << context.error().message;
+  if (!context) GTEST_FAIL() << "glfw context unavailable: " << context.error().message;
   const auto& info = (*context)->info();
   EXPECT_EQ(info.backend, "glfw");
   EXPECT_FALSE(info.renderer.empty());
@@ -22,7 +22,7 @@ TEST(GlfwContextTest, CreatesHiddenWindowWithCoreContext) {
 
 TEST(GlfwContextTest, TwoWindowsAtOnce) {
   auto a = context::createGlfwContext();
-  if (!a) GTEST_SKIP() << "glfw context unavailable: " << a.error().message;
+  if (!a) GTEST_FAIL() << "glfw context unavailable: " << a.error().message;
   auto b = context::createGlfwContext();
   ASSERT_TRUE(b) << b.error().message;
   EXPECT_TRUE((*a)->makeCurrent());

@@ -9,7 +9,7 @@ namespace {
 class GoldenTest : public ::testing::TestWithParam<Backend> {};
 
 TEST_P(GoldenTest, NormalMappedSphereMatchesGolden) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   const SphereMesh sphere = makeSphere(40.0f, 48, 96);

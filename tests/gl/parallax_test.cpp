@@ -73,7 +73,7 @@ render::ParallaxSettings oneLayer(render::TextureHandle base, float depthMm) {
 class ParallaxTest : public ::testing::TestWithParam<Backend> {};
 
 TEST_P(ParallaxTest, SphereMatchesGolden) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   const GoldenSphere golden = uploadGoldenSphere(*renderer);
@@ -104,7 +104,7 @@ TEST_P(ParallaxTest, SphereMatchesGolden) {
 }
 
 TEST_P(ParallaxTest, InnerLayerAppearsAtTheSnellOffset) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   const SphereMesh patch = makePatch(100.0f, 4, 0.0f);  // u = 0.5 at x = 0
@@ -143,7 +143,7 @@ TEST_P(ParallaxTest, InnerLayerAppearsAtTheSnellOffset) {
 }
 
 TEST_P(ParallaxTest, LightmapBlurKeepsAUniformLevelAndSmoothsASpot) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   const SphereMesh patch = makePatch(100.0f, 8, 0.0f);
@@ -186,7 +186,7 @@ TEST_P(ParallaxTest, LightmapBlurKeepsAUniformLevelAndSmoothsASpot) {
 }
 
 TEST_P(ParallaxTest, SwitchingLitParallaxLitGivesTheLitImageBack) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   const SphereMesh sphere = makeSphere(40.0f, 32, 64);
@@ -211,7 +211,7 @@ TEST_P(ParallaxTest, SwitchingLitParallaxLitGivesTheLitImageBack) {
 }
 
 TEST_P(ParallaxTest, ObjectsOfDifferentMethodsShareAFrameUnchanged) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   SphereMesh left = makeSphere(25.0f, 24, 48), right = makeSphere(25.0f, 24, 48);
@@ -263,7 +263,7 @@ TEST_P(ParallaxTest, ObjectsOfDifferentMethodsShareAFrameUnchanged) {
 }
 
 TEST_P(ParallaxTest, InnerLayersCompositeByTheirOpacities) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   const SphereMesh sphere = makeSphere(40.0f, 32, 64);
@@ -295,7 +295,7 @@ TEST_P(ParallaxTest, InnerLayersCompositeByTheirOpacities) {
 }
 
 TEST_P(ParallaxTest, BadSettingsAreOneClearError) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   const SphereMesh sphere = makeSphere(20.0f, 8, 16);

@@ -53,7 +53,7 @@ double meanRed(const Image8& image, int x, int y, int half) {
 class PipelineTest : public ::testing::TestWithParam<Backend> {};
 
 TEST_P(PipelineTest, TimingsListEveryPassInOrder) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction(), withShadowMap(256));
   ASSERT_TRUE(renderer) << renderer.error().message;
   const SphereMesh patch = makePatch(120.0f, 4, 0.0f), sphere = makeSphere(15.0f, 16, 32);
@@ -80,7 +80,7 @@ TEST_P(PipelineTest, TimingsListEveryPassInOrder) {
 }
 
 TEST_P(PipelineTest, UnknownMeshHandleIsAnError) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   const SphereMesh sphere = makeSphere(30.0f, 16, 32);
@@ -95,7 +95,7 @@ TEST_P(PipelineTest, UnknownMeshHandleIsAnError) {
 }
 
 TEST_P(PipelineTest, ShadowMapsDarkenTheGroundBehindAnOccluder) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction(), withShadowMap(512));
   ASSERT_TRUE(renderer) << renderer.error().message;
   const SphereMesh patch = makePatch(140.0f, 8, 0.0f);
@@ -127,7 +127,7 @@ TEST_P(PipelineTest, ShadowMapsDarkenTheGroundBehindAnOccluder) {
 }
 
 TEST_P(PipelineTest, PartialMeshUpdatesTouchOnlyTheirRange) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   SphereMesh patch = makePatch(120.0f, 10, 0.0f);

@@ -140,7 +140,7 @@ Radiance readRadiance(render::Renderer& r, float scale) {
 class RayMarchTest : public ::testing::TestWithParam<Backend> {};
 
 TEST_P(RayMarchTest, ShaderMatchesItsCpuModelInLinearRadianceAndTheGolden) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   const PatchScene p = loadPatch();
   auto gpu = makeGpu(p, *context);
   ASSERT_TRUE(gpu) << gpu.error().message;
@@ -191,7 +191,7 @@ TEST_P(RayMarchTest, ShaderMatchesItsCpuModelInLinearRadianceAndTheGolden) {
 // light: the local-plane estimate is exact, so each pixel must equal the closed form of
 // subsurface::flatSlabSingleScattering for its own view direction.
 TEST_P(RayMarchTest, FlatSlabUnderADirectionalLightMatchesTheClosedForm) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   SphereMesh quad = makePatch(400.0f, 2, 0.0f);
@@ -301,7 +301,7 @@ std::vector<float> pixelDifferences(const Radiance& a, const Radiance& b) {
 }
 
 TEST_P(RayMarchTest, APokeChangesTheImageOnlyAroundItAndMatchesAFullRefit) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   PatchScene p = loadPatch();
   auto gpu = makeGpu(p, *context);
   ASSERT_TRUE(gpu) << gpu.error().message;
@@ -359,7 +359,7 @@ TEST_P(RayMarchTest, APokeChangesTheImageOnlyAroundItAndMatchesAFullRefit) {
 // Lit, separable and ray-march objects in one frame: every method's pass runs, and the
 // ray-marched object's radiance is what it is alone (the methods share the targets, not state).
 TEST_P(RayMarchTest, CoexistsWithLitAndSeparableObjectsInOneFrame) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   const PatchScene p = loadPatch();
   auto gpu = makeGpu(p, *context);
   ASSERT_TRUE(gpu) << gpu.error().message;
@@ -402,7 +402,7 @@ TEST_P(RayMarchTest, CoexistsWithLitAndSeparableObjectsInOneFrame) {
 }
 
 TEST_P(RayMarchTest, BadSettingsAreClearErrors) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   const PatchScene p = loadPatch();
   auto gpu = makeGpu(p, *context);
   ASSERT_TRUE(gpu) << gpu.error().message;

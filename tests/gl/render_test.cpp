@@ -20,7 +20,7 @@ Result<Image8> renderSphere(render::Renderer& renderer, const SphereMesh& sphere
 }
 
 TEST_P(RenderTest, NormalMapAndHandednessChangeTheImage) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   SphereMesh sphere = makeSphere(40.0f, 32, 64);
@@ -43,7 +43,7 @@ TEST_P(RenderTest, NormalMapAndHandednessChangeTheImage) {
 }
 
 TEST_P(RenderTest, UpdateMeshMovesTheSurface) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   SphereMesh sphere = makeSphere(40.0f, 24, 48);
@@ -62,7 +62,7 @@ TEST_P(RenderTest, UpdateMeshMovesTheSurface) {
 }
 
 TEST_P(RenderTest, DrawsIntoHostFramebufferAndRestoresHostState) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto loaded = gl::loadGl(context->procAddressFunction());
   ASSERT_TRUE(loaded);
   const gl::GlApi& g = **loaded;
@@ -133,7 +133,7 @@ TEST_P(RenderTest, DrawsIntoHostFramebufferAndRestoresHostState) {
 }
 
 TEST_P(RenderTest, TwoRenderersInOneContextAreIndependent) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto a = render::Renderer::create(context->procAddressFunction());
   auto b = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(a && b);
@@ -149,7 +149,7 @@ TEST_P(RenderTest, TwoRenderersInOneContextAreIndependent) {
 }
 
 TEST_P(RenderTest, ErrorsInsteadOfAborts) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer);
   EXPECT_FALSE(renderer->renderImage(goldenScene(), kSize, kSize));  // no mesh yet
@@ -161,7 +161,7 @@ TEST_P(RenderTest, ErrorsInsteadOfAborts) {
 }
 
 TEST_P(RenderTest, MultisamplingSmoothsEdges) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto plain = render::Renderer::create(context->procAddressFunction());
   auto msaa = render::Renderer::create(context->procAddressFunction(),
                                        {.shaders = {}, .samples = 4, .gpuTimers = true});

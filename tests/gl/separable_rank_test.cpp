@@ -102,7 +102,7 @@ Tabulated ring() {
 class SeparableRankTest : public ::testing::TestWithParam<Backend> {};
 
 TEST_P(SeparableRankTest, RankRIsTheSignedSumOfItsComponentsRenderedAlone) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   // A textured patch (rank 3, mixed signs) behind a sphere (rank 1) in one frame.
@@ -190,7 +190,7 @@ TEST_P(SeparableRankTest, RankRIsTheSignedSumOfItsComponentsRenderedAlone) {
 }
 
 TEST_P(SeparableRankTest, SvdRank2KeepsTheMeanOfAFlatPatchWithANegativeComponent) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   optics::KernelSettings ks;
   ks.taps = 17;
   ks.rank = 2;
@@ -220,7 +220,7 @@ TEST_P(SeparableRankTest, SvdRank2KeepsTheMeanOfAFlatPatchWithANegativeComponent
 }
 
 TEST_P(SeparableRankTest, SvdRank2IsCloserToTheReferenceThanRank1) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   const Tabulated profile = twoGaussians();
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
@@ -254,7 +254,7 @@ TEST_P(SeparableRankTest, SvdRank2IsCloserToTheReferenceThanRank1) {
 // A white patch turned 20 degrees about the view axis, smaller than the frame: its silhouette
 // pixels are partly covered. MSAA 4.
 TEST_P(SeparableRankTest, MsaaSilhouettePixelsCarryARealSurfaceSampleAndNoBackground) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction(),
                                            {.shaders = {}, .samples = 4, .gpuTimers = false});
   ASSERT_TRUE(renderer) << renderer.error().message;

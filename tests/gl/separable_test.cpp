@@ -31,7 +31,7 @@ Image8 halfWhite(int whiteColumns) {
 class SeparableTest : public ::testing::TestWithParam<Backend> {};
 
 TEST_P(SeparableTest, SphereMatchesGolden) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   const GoldenSphere golden = uploadGoldenSphere(*renderer);
@@ -49,7 +49,7 @@ TEST_P(SeparableTest, SphereMatchesGolden) {
 }
 
 TEST_P(SeparableTest, BlurKeepsTheMeanBrightnessOfAUniformlyLitPatch) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   auto scene = texturedPatchScene(*renderer, makeBaseColor(256), gaussianKernel(3.0f, 25));
@@ -77,7 +77,7 @@ TEST_P(SeparableTest, BlurKeepsTheMeanBrightnessOfAUniformlyLitPatch) {
 }
 
 TEST_P(SeparableTest, FollowSurfaceStopsBleedingAcrossADepthStep) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   // One object, two quads: the left (white) at z = 0, the right (black) 40 mm behind it, meeting
@@ -115,7 +115,7 @@ TEST_P(SeparableTest, FollowSurfaceStopsBleedingAcrossADepthStep) {
 }
 
 TEST_P(SeparableTest, ObjectsBlurWithTheirOwnKernelsAndDoNotBleed) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   // Two abutting patches at the same depth: left x -100..0, right 0..100.
@@ -149,7 +149,7 @@ TEST_P(SeparableTest, ObjectsBlurWithTheirOwnKernelsAndDoNotBleed) {
 }
 
 TEST_P(SeparableTest, BlurAgreesWithTheCpuReferenceOnAFlatPatch) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   auto scene = texturedPatchScene(*renderer, makeBaseColor(256), gaussianKernel(2.0f, 25));
@@ -185,7 +185,7 @@ TEST_P(SeparableTest, BlurAgreesWithTheCpuReferenceOnAFlatPatch) {
 }
 
 TEST_P(SeparableTest, TimingsListEverySeparablePass) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   const SphereMesh sphere = makeSphere(30.0f, 16, 32), patch = makePatch(150.0f, 2, -40.0f);

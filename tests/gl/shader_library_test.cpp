@@ -86,7 +86,7 @@ TEST(ShaderLibraryTest, MissingVersionIsAnError) {
 class ShaderCompileTest : public ::testing::TestWithParam<Backend> {};
 
 TEST_P(ShaderCompileTest, EmbeddedVariantsCompile) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto gl = gl::loadGl(context->procAddressFunction());
   ASSERT_TRUE(gl) << gl.error().message;
   const gl::ShaderDefine mapped[] = {{"TISSUE_NORMAL_MAP", "1"}};
@@ -97,7 +97,7 @@ TEST_P(ShaderCompileTest, EmbeddedVariantsCompile) {
 }
 
 TEST_P(ShaderCompileTest, BrokenShaderGivesErrorWithFileNameAndLog) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto gl = gl::loadGl(context->procAddressFunction());
   ASSERT_TRUE(gl) << gl.error().message;
   const auto dir = scratchDir(std::string("broken_") + backendName(GetParam()));

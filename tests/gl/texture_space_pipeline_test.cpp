@@ -60,7 +60,7 @@ render::SceneObject objectOf(const Textured& t, render::MethodSettings method, c
 class TextureSpacePipelineTest : public ::testing::TestWithParam<Backend> {};
 
 TEST_P(TextureSpacePipelineTest, SphereMatchesGoldenAndOptimisationsStayClose) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   const Textured sphere = uploadSphere(*renderer);
@@ -92,7 +92,7 @@ TEST_P(TextureSpacePipelineTest, SphereMatchesGoldenAndOptimisationsStayClose) {
 }
 
 TEST_P(TextureSpacePipelineTest, UniformlyLitPatchKeepsItsMeanDiffuseBrightness) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   const SphereMesh patch = makePatch(200.0f, 8, 0.0f);  // fills the view
@@ -120,7 +120,7 @@ TEST_P(TextureSpacePipelineTest, UniformlyLitPatchKeepsItsMeanDiffuseBrightness)
 TEST_P(TextureSpacePipelineTest, LightsTheSurfaceAsTheSeparableMethodDoes) {
   // Two lights, one with a shadow map, normal map and base colour: with a diffusion that does
   // nothing, texture space holds what the separable geometry pass writes before its blur.
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   const Textured sphere = uploadSphere(*renderer);
@@ -160,7 +160,7 @@ TEST_P(TextureSpacePipelineTest, LightsTheSurfaceAsTheSeparableMethodDoes) {
 }
 
 TEST_P(TextureSpacePipelineTest, SeparableAndTextureSpaceObjectsSideBySide) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   const Textured left = uploadSphere(*renderer, 30.0f, {-35.0f, 0.0f, 0.0f});
@@ -205,7 +205,7 @@ TEST_P(TextureSpacePipelineTest, SeparableAndTextureSpaceObjectsSideBySide) {
 }
 
 TEST_P(TextureSpacePipelineTest, OneObjectSwitchesMethodAtRunTime) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   const std::vector<render::MethodSettings> methods = {render::LitSettings{},
                                                        render::rankOneSeparable(gaussianTaps(2.0f, 17)),
                                                        skinTextureSpace(kMapSize, true)};
@@ -236,7 +236,7 @@ TEST_P(TextureSpacePipelineTest, OneObjectSwitchesMethodAtRunTime) {
 }
 
 TEST_P(TextureSpacePipelineTest, BadSettingsAreErrors) {
-  TISSUE_CONTEXT_OR_SKIP(context, GetParam());
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
   auto renderer = render::Renderer::create(context->procAddressFunction());
   ASSERT_TRUE(renderer) << renderer.error().message;
   const Textured sphere = uploadSphere(*renderer, 20.0f);

@@ -25,7 +25,7 @@ class TextureSpaceMapsTest : public ::testing::Test {
  protected:
   void SetUp() override {
     auto context = createContext(Backend::Egl);
-    if (!context) GTEST_SKIP() << "egl context unavailable: " << context.error().message;
+    if (!context) GTEST_FAIL() << "egl context unavailable: " << context.error().message;
     m_context = std::move(*context);
     auto r = render::Renderer::create(m_context->procAddressFunction());
     ASSERT_TRUE(r) << r.error().message;

@@ -162,7 +162,7 @@ TEST_P(OrganAtlas, IsValidAndReportsItsDistortion) {
   const std::filesystem::path path = name.starts_with("data/")
                                          ? std::filesystem::path(TISSUE_TEST_DATA_DIR) / name.substr(5)
                                          : std::filesystem::path(TISSUE_TEST_SHARED_DIR) / "meshes" / name;
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is not here";
+  if (!std::filesystem::exists(path)) GTEST_FAIL() << path << " is not here";
   LoadOptions options;
   options.scaleToMm = scale;
   auto mesh = loadMesh(path, options);

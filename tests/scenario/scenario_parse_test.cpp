@@ -144,7 +144,7 @@ TEST(ScenarioParse, TheDataScenarioParsesAndResolvesItsMesh) {
 
 TEST(ScenarioParse, SharedMeshesResolve) {
   const std::filesystem::path shared = std::filesystem::path(TISSUE_TEST_SHARED_DIR) / "meshes";
-  if (!std::filesystem::exists(shared / "liver-smooth.obj")) GTEST_SKIP() << "no shared meshes";
+  if (!std::filesystem::exists(shared / "liver-smooth.obj")) GTEST_FAIL() << "no shared meshes";
   auto s = parseScenario(
       R"({"mesh": "liver-smooth.obj", "springs": {"from": "surface", "stiffness": 1}, "mass": {"total": 1}})",
       kFile, {.sharedMeshesDir = shared});
@@ -155,7 +155,7 @@ TEST(ScenarioParse, SharedMeshesResolve) {
 TEST(ScenarioParse, TissueBlockOnTetsMeetsTheIsotropicProjectionIdentity) {
   // k = 6 E V_t / sum_e l_e^2 on each tet's edges: summed over the mesh, sum_s k_s l_s^2 = 6 E V.
   const std::filesystem::path msh = std::filesystem::path(TISSUE_TEST_SHARED_DIR) / "meshes" / "liver.msh";
-  if (!std::filesystem::exists(msh)) GTEST_SKIP() << "no shared liver.msh";
+  if (!std::filesystem::exists(msh)) GTEST_FAIL() << "no shared liver.msh";
   auto s = parseScenario(tissueScenario(R"({"youngs_modulus_kpa": 6})", R"({"from": "tet-edges"})",
                                         R"("mesh_scale_to_mm": 25)", msh.string()),
                          kFile);

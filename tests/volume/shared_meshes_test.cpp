@@ -104,26 +104,26 @@ void expectSound(const std::filesystem::path& file, const HeaderCounts& header) 
 
 TEST(SharedVolumeMeshes, LiverMshLoadsWithItsHeaderCounts) {
   const auto file = kMeshes / "liver.msh";
-  if (!std::filesystem::exists(file)) GTEST_SKIP() << "no " << file;
+  if (!std::filesystem::exists(file)) GTEST_FAIL() << "no " << file;
   expectSound(file, gmshV1Counts(slurp(file)));
 }
 
 TEST(SharedVolumeMeshes, LiverVtkLoadsWithItsHeaderCounts) {
   const auto file = kMeshes / "liver_tets.vtk";
-  if (!std::filesystem::exists(file)) GTEST_SKIP() << "no " << file;
+  if (!std::filesystem::exists(file)) GTEST_FAIL() << "no " << file;
   expectSound(file, legacyVtkCounts(slurp(file)));
 }
 
 TEST(SharedVolumeMeshes, TongueVtuLoadsWithItsHeaderCounts) {
   const auto file = kMeshes / "volumetricTongue.vtu";
-  if (!std::filesystem::exists(file)) GTEST_SKIP() << "no " << file;
+  if (!std::filesystem::exists(file)) GTEST_FAIL() << "no " << file;
   expectSound(file, vtuCounts(slurp(file)));
 }
 
 TEST(SharedVolumeMeshes, GmshAndVtkReadersAgreeOnTheSameLiver) {
   // liver_tets.vtk is liver.msh converted with the node order kept: two readers, one mesh.
   const auto msh = kMeshes / "liver.msh", vtk = kMeshes / "liver_tets.vtk";
-  if (!std::filesystem::exists(msh) || !std::filesystem::exists(vtk)) GTEST_SKIP() << "no shared livers";
+  if (!std::filesystem::exists(msh) || !std::filesystem::exists(vtk)) GTEST_FAIL() << "no shared livers";
   auto a = loadTetMesh(msh), b = loadTetMesh(vtk);
   ASSERT_TRUE(a.ok() && b.ok());
   EXPECT_EQ(a->positions, b->positions);
