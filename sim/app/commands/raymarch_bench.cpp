@@ -133,7 +133,9 @@ int run(BenchOptions o, const GlobalOptions& global) {
   auto loaded = loadRayMarchScene(o.mesh, float(o.width) / float(o.height), o.closeUp);
   if (!loaded) return fail(cmd, loaded.error().message);
   RayMarchScene& scene = *loaded;
-  if (o.pokeDepthMm > 0.0f) pokeScene(scene, 0.02, o.pokeDepthMm);
+  if (o.pokeDepthMm > 0.0f) {
+    if (auto poked = pokeScene(scene, 0.02, o.pokeDepthMm); !poked) return fail(cmd, poked.error().message);
+  }
   // Step 1: the CPU reference: light entry on the actual mesh, midpoint rule, no early stop.
   subsurface::CpuImageSettings ref;
   ref.width = o.width;
