@@ -21,7 +21,6 @@ namespace tissue::studies {
 namespace {
 
 Result<TsdOrgan> loadOrgan(const std::filesystem::path& path, float scale, bool allowAtlas) {
-  TsdOrgan organ;
   if (allowAtlas) {
     // The scene module's organ loading: the file's UVs when usable, else the automatic atlas,
     // computed once on the rest shape (no material file: these commands bring their own profile).
@@ -30,14 +29,21 @@ Result<TsdOrgan> loadOrgan(const std::filesystem::path& path, float scale, bool 
     source.meshScaleToMm = scale;
     auto assets = scene::loadOrganAssets(source);
     if (!assets) return assets.error();
-    organ.mesh = std::move(assets->mesh);
+    TsdOrgan organ = tsdOrganOf(std::move(assets->mesh));
     organ.atlas = assets->atlas;
     organ.charts = assets->atlasCharts;
-  } else {
-    auto loaded = mesh::loadMesh(path, {.requireUvs = false, .scaleToMm = scale});
-    if (!loaded) return loaded.error();
-    organ.mesh = std::move(*loaded);
+    return organ;
   }
+  auto loaded = mesh::loadMesh(path, {.requireUvs = false, .scaleToMm = scale});
+  if (!loaded) return loaded.error();
+  return tsdOrganOf(std::move(*loaded));
+}
+
+}  // namespace
+
+TsdOrgan tsdOrganOf(SurfaceMesh mesh) {
+  TsdOrgan organ;
+  organ.mesh = std::move(mesh);
   SurfaceMesh& m = organ.mesh;
   // Normals per geometric vertex (smooth across seams), tangent frames from the UVs.
   const std::vector<Float3> geo = mesh::geometricPositionsOf(m);
@@ -54,8 +60,6 @@ Result<TsdOrgan> loadOrgan(const std::filesystem::path& path, float scale, bool 
   organ.lo = box.lo, organ.hi = box.hi;
   return organ;
 }
-
-}  // namespace
 
 Result<TsdOrgan> loadTsdOrgan(const std::filesystem::path& path, float scale) {
   return loadOrgan(path, scale, true);

@@ -33,6 +33,9 @@ struct TsdOrgan {
   }
 };
 
+/// `mesh` (mm) with smooth normals per geometric vertex and tangent frames from its UVs (if any).
+TsdOrgan tsdOrganOf(SurfaceMesh mesh);
+
 /// Loads a mesh (mm per file unit `scale`) and gives it usable UVs: its own when present and
 /// free of overlaps, else mesh::computeUvAtlas on its welded surface (scene::loadOrganAssets).
 Result<TsdOrgan> loadTsdOrgan(const std::filesystem::path& path, float scale);
