@@ -7,7 +7,6 @@
 #include "organ_data.h"
 #include "output.h"
 #include "pass_timings_json.h"
-#include "sss_bench.h"
 #include "tissue/context/headless_context.h"
 #include "tissue/core/image.h"
 #include "tissue/core/stopwatch.h"
@@ -16,6 +15,7 @@
 #include "tissue/render/renderer.h"
 #include "tissue/scene/organ_methods.h"
 #include "tissue/studies/coverage.h"
+#include "tissue/studies/sss_bench.h"
 
 namespace tissue::sim_app {
 
