@@ -90,6 +90,28 @@ Result<reference::ImageError> compareLastFrame(SssBenchContext& ctx) {
                                          ctx.reference, ctx.profiles);
 }
 
+Result<ReferenceError> lastFrameReferenceError(render::Renderer& renderer, const render::FloatImage& diffuse,
+                                               const render::FloatImage& position,
+                                               const reference::RadialProfile& truth) {
+  auto blurred = renderer.readFrame(render::FrameView::BlurredDiffuse);
+  if (!blurred) return blurred.error();
+  auto radiance = renderer.readFrame(render::FrameView::Radiance);
+  if (!radiance) return radiance.error();
+  std::vector<Float4> pre = diffuse.pixels;
+  dropPartialCoverage(pre, *radiance);  // MSAA silhouettes are not surface points
+  const reference::ScreenBuffers frame{diffuse.width, diffuse.height, pre, position.pixels};
+  const std::vector<reference::RadialProfile> profiles{{}, truth};
+  Stopwatch watch;
+  auto exact = reference::convolveScreen(frame, profiles);
+  if (!exact) return exact.error();
+  ReferenceError out;
+  out.referenceMs = watch.elapsedMs();
+  const auto e = reference::compareWithReference(frame, blurred->pixels, *exact, profiles);
+  out.imageRms = e.rms;
+  out.relativeRms = e.relativeRms;
+  return out;
+}
+
 namespace {
 
 // One separable row: kernel `model` with `taps` taps and `rank` components, timed and compared.

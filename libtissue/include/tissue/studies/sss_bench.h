@@ -72,6 +72,21 @@ Result<std::vector<SssBenchRow>> separableBenchRows(SssBenchContext& ctx, std::v
 Result<std::vector<SssBenchRow>> textureSpaceBenchRows(SssBenchContext& ctx,
                                                        std::vector<SssBenchSkip>& skipped);
 
+/// The image error of a frame's blurred diffuse against the exact convolution of its pre-blur one.
+struct ReferenceError {
+  double referenceMs = 0.0;  ///< ms, the CPU convolution's wall time
+  double imageRms = 0.0;     ///< RMS, linear radiance
+  double relativeRms = 0.0;  ///< imageRms / mean reference radiance
+};
+
+/// The renderer's last frame (its BlurredDiffuse, read back as it is) against the exact
+/// screen-space convolution (reference::convolveScreen with `truth` for object 1) of the pre-blur
+/// `diffuse` and `position` of the same frame, MSAA silhouettes dropped (dropPartialCoverage):
+/// the demo's measure of a method it switched to at run time.
+Result<ReferenceError> lastFrameReferenceError(render::Renderer& renderer, const render::FloatImage& diffuse,
+                                               const render::FloatImage& position,
+                                               const reference::RadialProfile& truth);
+
 /// A method of the bench: its name and how it makes its rows.
 struct SssBenchMethod {
   const char* name;
