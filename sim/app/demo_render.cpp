@@ -7,15 +7,12 @@
 #include "organ_data.h"
 #include "output.h"
 #include "pass_timings_json.h"
-#include "sss_bench.h"
 #include "tissue/context/headless_context.h"
 #include "tissue/core/image.h"
-#include "tissue/core/stopwatch.h"
 #include "tissue/core/vec_math.h"
-#include "tissue/reference/screen_convolution.h"
 #include "tissue/render/renderer.h"
 #include "tissue/scene/organ_methods.h"
-#include "tissue/studies/coverage.h"
+#include "tissue/studies/sss_bench.h"
 
 namespace tissue::sim_app {
 
@@ -127,33 +124,6 @@ Result<void> DemoRenderer::render(const mesh::DeformableSurface& surface, const 
   return writePng(png, *image);
 }
 
-namespace {
-
-/// The frame's subsurface diffuse (after the blur or the texture-space diffusion) against the
-/// exact convolution of its pre-blur diffuse with `truth` (tissue::reference), into `j`.
-/// Texture-space pixels hold their diffused radiance in the Diffuse view, so the caller passes
-/// the pre-blur `diffuse` and `position` of the same frame rendered separably.
-void addReferenceError(render::Renderer& renderer, const render::FloatImage& diffuse,
-                       const render::FloatImage& position, const reference::RadialProfile& truth,
-                       nlohmann::json& j) {
-  auto blurred = renderer.readFrame(render::FrameView::BlurredDiffuse);
-  auto radiance = renderer.readFrame(render::FrameView::Radiance);
-  if (!blurred || !radiance) return;
-  std::vector<Float4> pre = diffuse.pixels;
-  studies::dropPartialCoverage(pre, *radiance);  // MSAA silhouettes are not surface points
-  const reference::ScreenBuffers frame{diffuse.width, diffuse.height, pre, position.pixels};
-  const std::vector<reference::RadialProfile> profiles{{}, truth};
-  Stopwatch watch;
-  if (auto exact = reference::convolveScreen(frame, profiles); exact) {
-    j["reference_ms"] = watch.elapsedMs();
-    const auto e = reference::compareWithReference(frame, blurred->pixels, *exact, profiles);
-    j["image_rms"] = e.rms;
-    j["relative_rms"] = e.relativeRms;
-  }
-}
-
-}  // namespace
-
 nlohmann::json DemoRenderer::renderSubsurface(const mesh::DeformableSurface& surface,
                                               const scene::OrganAssets& organ,
                                               const std::filesystem::path& png, bool textureSpace) {
@@ -201,7 +171,16 @@ nlohmann::json DemoRenderer::renderSubsurface(const mesh::DeformableSurface& sur
   else
     j["kernel"] = truth->kernelName;
   // Step 4: the subsurface diffuse against the CPU reference on this frame.
-  if (diffuse && position) addReferenceError(*s.renderer, *diffuse, *position, truth->truth, j);
+  // The subsurface diffuse against the exact convolution of the frame's pre-blur diffuse:
+  // texture-space pixels hold their diffused radiance in the Diffuse view, so both methods are
+  // measured against the pre-blur diffuse and position of the frame rendered separably.
+  if (diffuse && position) {
+    if (auto e = studies::lastFrameReferenceError(*s.renderer, *diffuse, *position, truth->truth)) {
+      j["reference_ms"] = e->referenceMs;
+      j["image_rms"] = e->imageRms;
+      j["relative_rms"] = e->relativeRms;
+    }
+  }
   return j;
 }
 

@@ -45,13 +45,6 @@ std::filesystem::path dataDir() {
 std::filesystem::path generatedDataDir() {
   return fromEnv("TISSUE_GENERATED_DATA_DIR", TISSUE_DEFAULT_GENERATED_DATA_DIR);
 }
-std::filesystem::path findDataTexture(const std::string& stem, const std::string& name) {
-  for (const auto& dir : {generatedDataDir() / "textures" / stem, dataDir() / "textures" / stem}) {
-    const auto path = dir / (name + ".png");
-    if (std::filesystem::exists(path)) return path;
-  }
-  return {};
-}
 
 std::filesystem::path sharedDir() {
   return fromEnv("TISSUE_SHARED_DIR", TISSUE_DEFAULT_SHARED_DIR);

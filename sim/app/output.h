@@ -21,9 +21,6 @@ int fail(const std::string& command, const std::string& message);
 std::filesystem::path dataDir();
 /// Where build-time data (large textures) lives: $TISSUE_GENERATED_DATA_DIR, else build/data.
 std::filesystem::path generatedDataDir();
-/// The project's texture `name` (e.g. "normal_map") for the data/ mesh `stem`: the build-time
-/// 1024 version when built, else the committed small one; empty when neither exists.
-std::filesystem::path findDataTexture(const std::string& stem, const std::string& name);
 /// The shared folder beside the checkout (meshes made by others): $TISSUE_SHARED_DIR or ../shared.
 std::filesystem::path sharedDir();
 

@@ -1,9 +1,8 @@
 #pragma once
 /// \file
-/// What `tissue-sim render --method parallax` and `parallax-study` share: a mesh made ready for
-/// the layered-parallax method (unique UVs: its own, else the automatic atlas), a headless
-/// renderer holding it with the project's layer textures (base colour, normal map, opacity, the
-/// vessel network of inner_base.png; data/textures/<mesh>/), and a scene of one parallax object.
+/// What `tissue-sim render --method parallax` and `parallax-study` share: the organ and its
+/// one-object scene (tissue/studies/parallax_scene.h, from data/materials/<mesh>.json when there
+/// is one) on a headless context of the app's environment.
 
 #include <filesystem>
 #include <memory>
@@ -12,14 +11,11 @@
 #include "texture_space_setup.h"
 #include "tissue/context/gl_context.h"
 #include "tissue/render/renderer.h"
+#include "tissue/studies/parallax_scene.h"
 
 namespace tissue::sim_app {
 
-/// The parallax settings a command may change (defaults: ParallaxSettings').
-struct ParallaxOptions {
-  float layerDepthMm = 1.5f;  ///< mm, the one inner layer's depth
-  render::ParallaxSettings settings;
-};
+using studies::ParallaxOptions;
 
 /// A renderer with one parallax object. The context outlives the renderer (member order).
 struct ParallaxScene {

@@ -1,49 +1,23 @@
 #pragma once
 /// \file
-/// What tissue-sim's texture-space commands share: an organ made ready for texture-space
-/// diffusion (its own UVs when usable, else the automatic atlas, computed once), the d'Eon skin
-/// Gaussians, and their profile for the CPU reference convolution.
+/// tissue-sim's texture-space set-up: the organ and the skin profile are the library's
+/// (tissue/studies/texture_space_organ.h); the skin table is ../shared/reference's.
 
-#include <filesystem>
-#include <string>
 #include <vector>
 
-#include "tissue/core/image.h"
 #include "tissue/core/result.h"
-#include "tissue/core/surface_mesh.h"
-#include "tissue/render/renderer.h"
-#include "tissue/render/texture_space_math.h"
-#include "tissue/render/texture_space_reference.h"
+#include "tissue/studies/texture_space_organ.h"
 
 namespace tissue::sim_app {
 
-/// An organ as texture-space diffusion draws it.
-struct TsdOrgan {
-  SurfaceMesh mesh;  ///< render vertices (split at the atlas's or the file's seams), mm
-  std::vector<Float3> normals;
-  std::vector<Float4> tangents;
-  bool atlas = false;      ///< true: the automatic UV atlas replaced missing or unusable UVs
-  std::size_t charts = 0;  ///< atlas charts (0 with the file's UVs)
-  float uvDensity = 0.0f;  ///< sqrt(UV area / surface area), UV units per mm
-  Float3 lo, hi;           ///< bounds, mm
-  render::MeshArrays arrays() const {
-    return {mesh.positions, normals, tangents, mesh.uvs, mesh.triangles, {}};
-  }
-};
+using studies::loadRenderMesh;
+using studies::loadTsdOrgan;
+using studies::skinProfileTable;
+using studies::TsdOrgan;
 
-/// Loads a mesh (mm per file unit `scale`) and gives it usable UVs: its own when present and
-/// free of overlaps, else mesh::computeUvAtlas on its welded surface.
-Result<TsdOrgan> loadTsdOrgan(const std::filesystem::path& path, float scale);
-
-/// The same without the atlas: the mesh's own UVs (tangent frames from them) or none.
-Result<TsdOrgan> loadRenderMesh(const std::filesystem::path& path, float scale);
-
-/// d'Eon & Luebke's skin profile as `count` Gaussians (2, 4 or 6), from
-/// ../shared/reference/deon_skin_gaussians.tsv: the file's six, or fewer fitted to the six-term
-/// profile by optics::fitGaussians (Jimenez et al. eq. 2).
+/// d'Eon & Luebke's skin profile as `count` Gaussians (2, 4 or 6) from
+/// ../shared/reference/deon_skin_gaussians.tsv (studies::skinGaussians); the errors name the
+/// option and the environment variable.
 Result<std::vector<render::ProfileGaussian>> skinGaussians(int count);
-
-/// The six-term skin profile sampled for the CPU reference, and its cutoff radius (mm).
-render::RadialProfileTable skinProfileTable(const std::vector<render::ProfileGaussian>& six, float& cutoffMm);
 
 }  // namespace tissue::sim_app

@@ -12,9 +12,9 @@
 #include "output.h"
 #include "raymarch_scene.h"
 #include "tissue/context/headless_context.h"
-#include "tissue/core/statistics.h"
 #include "tissue/core/stopwatch.h"
 #include "tissue/inspect/chart.h"
+#include "tissue/studies/raymarch_bench.h"
 
 namespace tissue::sim_app {
 namespace {
@@ -32,99 +32,6 @@ struct BenchOptions {
   render::RayMarchSettings adaptive;  // its adaptive-quality fields
 };
 
-double median(const std::vector<double>& v) {
-  return v.empty() ? -1.0 : summarizeSamples(v).median;
-}
-
-// The last frame's linear radiance divided by the method's scale, and the pixels both the CPU
-// ray cast and the GPU rasteriser cover (silhouette pixels only one of them covers would compare
-// tissue with background and swamp the figures).
-struct GpuRadiance {
-  std::vector<Float3> radiance;  // light units, rows top to bottom
-  std::vector<std::uint8_t> mask;
-};
-
-Result<GpuRadiance> readRadiance(render::Renderer& renderer, std::span<const std::uint8_t> cpuCovered) {
-  auto frame = renderer.readFrame(render::FrameView::Radiance);
-  if (!frame) return frame.error();
-  GpuRadiance out{{}, std::vector<std::uint8_t>(cpuCovered.begin(), cpuCovered.end())};
-  for (std::size_t i = 0; i < frame->pixels.size(); ++i) {
-    const Float4& p = frame->pixels[i];
-    out.radiance.push_back(
-        {p.x / kRayMarchRadianceScale, p.y / kRayMarchRadianceScale, p.z / kRayMarchRadianceScale});
-    if (p.w <= 0.0f) out.mask[i] = 0;
-  }
-  return out;
-}
-
-// Mean samples per covered pixel: the samples-shown frame writes samples / 100 as radiance,
-// also returned as a grey image (white = 100 samples; black where uncovered).
-struct SampleCounts {
-  double mean = 0.0;
-  Image8 image;
-};
-
-Result<SampleCounts> meanSamples(RayMarchRender& gpu, int width, int height,
-                                 std::span<const std::uint8_t> mask) {
-  gpu.settings().showSamples = true;
-  auto shown = gpu.render(width, height);
-  gpu.settings().showSamples = false;
-  if (!shown) return shown.error();
-  auto frame = gpu.renderer.readFrame(render::FrameView::Radiance);
-  if (!frame) return frame.error();
-  SampleCounts out{0.0, Image8(width, height, 4)};
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < mask.size(); ++i) {
-    const double samples = std::round(double(frame->pixels[i].x) * 100.0);
-    if (mask[i]) out.mean += samples, ++n;
-    const auto grey = std::uint8_t(std::lround(std::clamp(samples / 100.0, 0.0, 1.0) * 255.0));
-    std::uint8_t* px = out.image.at(int(i) % width, int(i) / width);
-    px[0] = px[1] = px[2] = grey;
-    px[3] = 255;
-  }
-  out.mean = n ? out.mean / double(n) : 0.0;
-  return out;
-}
-
-// The settings of the table: 10, 25, 50, 100 samples and adaptive (0).
-constexpr int kSettings[] = {10, 25, 50, 100, 0};
-
-render::RayMarchSettings settingFor(int n, const render::RayMarchSettings& adaptive) {
-  render::RayMarchSettings s = adaptive;
-  s.samples = n;
-  s.adaptive = n == 0;
-  s.radianceScale = kRayMarchRadianceScale;
-  return s;
-}
-
-// Times every setting: one warm-up frame each (allocation, shader caches), then `repeats`
-// rounds of one frame per setting, interleaved so that a change in the machine's load falls on
-// every setting alike. ms = median of the "ray-march" pass (CPU wall clock to completion,
-// glFinish); gpu_ms = median of its timer query where valid (-1 if never).
-struct Timing {
-  double ms = 0.0, gpuMs = -1.0;
-};
-
-Result<std::vector<Timing>> timeSettings(RayMarchRender& gpu, const BenchOptions& o) {
-  const std::size_t count = std::size(kSettings);
-  std::vector<std::vector<double>> ms(count), gpuMs(count);
-  for (int r = 0; r < o.repeats + 1; ++r) {
-    for (std::size_t k = 0; k < count; ++k) {
-      gpu.setMarch(settingFor(kSettings[k], o.adaptive));
-      double pass = 0.0;
-      if (auto frame = gpu.render(o.width, o.height, &pass); !frame) return frame.error();
-      if (r == 0) continue;
-      ms[k].push_back(pass);
-      const render::PassTiming* t = gpu.renderer.lastTimings().find("ray-march");
-      if (t && t->gpuMs >= 0.0) gpuMs[k].push_back(t->gpuMs);
-    }
-  }
-  std::vector<Timing> out;
-  for (std::size_t k = 0; k < count; ++k)
-    out.push_back({median(ms[k]), median(gpuMs[k])});
-  return out;
-}
-
 int run(BenchOptions o, const GlobalOptions& global) {
   const char* cmd = "raymarch-bench";
   if (o.mesh.empty()) o.mesh = (dataDir() / "meshes" / "liver.obj").string();
@@ -133,7 +40,9 @@ int run(BenchOptions o, const GlobalOptions& global) {
   auto loaded = loadRayMarchScene(o.mesh, float(o.width) / float(o.height), o.closeUp);
   if (!loaded) return fail(cmd, loaded.error().message);
   RayMarchScene& scene = *loaded;
-  if (o.pokeDepthMm > 0.0f) pokeScene(scene, 0.02, o.pokeDepthMm);
+  if (o.pokeDepthMm > 0.0f) {
+    if (auto poked = pokeScene(scene, 0.02, o.pokeDepthMm); !poked) return fail(cmd, poked.error().message);
+  }
   // Step 1: the CPU reference: light entry on the actual mesh, midpoint rule, no early stop.
   subsurface::CpuImageSettings ref;
   ref.width = o.width;
@@ -165,14 +74,14 @@ int run(BenchOptions o, const GlobalOptions& global) {
   std::vector<Float3> hundred;
   double hundredMs = 0.0;
   std::vector<std::uint8_t> mask;
-  auto timings = timeSettings(*gpu, o);
+  auto timings = studies::timeRayMarchSettings(*gpu, o.adaptive, o.width, o.height, o.repeats);
   if (!timings) return fail(cmd, timings.error().message);
-  for (std::size_t k = 0; k < std::size(kSettings); ++k) {
-    const int n = kSettings[k];
-    gpu->setMarch(settingFor(n, o.adaptive));
+  for (std::size_t k = 0; k < std::size(studies::kRayMarchBenchSettings); ++k) {
+    const int n = studies::kRayMarchBenchSettings[k];
+    gpu->setMarch(studies::rayMarchBenchSetting(n, o.adaptive));
     auto image = gpu->render(o.width, o.height);
     if (!image) return fail(cmd, image.error().message);
-    auto radiance = readRadiance(gpu->renderer, reference.covered);
+    auto radiance = studies::readRayMarchRadiance(gpu->renderer, reference.covered);
     if (!radiance) return fail(cmd, radiance.error().message);
     if (mask.empty()) mask = radiance->mask;  // one mask for every row: the first frame's coverage
     nlohmann::json row;
@@ -183,7 +92,7 @@ int run(BenchOptions o, const GlobalOptions& global) {
     row["radiance_rel_rms"] = subsurface::relativeRadianceRms(radiance->radiance, reference.radiance, mask);
     if (n == 100) hundredImage = *image, hundred = radiance->radiance, hundredMs = (*timings)[k].ms;
     if (n == 0) {
-      auto samples = meanSamples(*gpu, o.width, o.height, mask);
+      auto samples = studies::meanSamples(*gpu, o.width, o.height, mask);
       if (!samples) return fail(cmd, samples.error().message);
       row["samples"] = samples->mean;
       if (!o.images.empty())
@@ -213,7 +122,7 @@ int run(BenchOptions o, const GlobalOptions& global) {
   gpu->setMarch(s50);
   auto gpu50 = gpu->render(o.width, o.height);
   if (!gpu50) return fail(cmd, gpu50.error().message);
-  auto radiance50 = readRadiance(gpu->renderer, reference.covered);
+  auto radiance50 = studies::readRayMarchRadiance(gpu->renderer, reference.covered);
   if (!radiance50) return fail(cmd, radiance50.error().message);
   if (!o.images.empty()) {
     const std::filesystem::path dir = o.images;

@@ -33,7 +33,9 @@ Result<nlohmann::json> study(const Case& c, const StudyOptions& o) {
                                   float(o.width) / float(o.height), true);
   if (!loaded) return loaded.error();
   RayMarchScene& scene = *loaded;
-  if (c.pokeDepthMm > 0.0f) pokeScene(scene, 0.02, c.pokeDepthMm);
+  if (c.pokeDepthMm > 0.0f) {
+    if (auto poked = pokeScene(scene, 0.02, c.pokeDepthMm); !poked) return poked.error();
+  }
   studies::RayMarchStudyConfig config;
   config.width = o.width;
   config.height = o.height;

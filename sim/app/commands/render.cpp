@@ -105,10 +105,15 @@ int renderParallax(const RenderOptions& o, const GlobalOptions& global) {
 
 int run(RenderOptions o, const GlobalOptions& global) {
   const char* cmd = "render";
-  // A mesh of the project's own data gets its own textures unless others are given.
+  // A mesh of the project's own data gets its material file's textures unless others are given
+  // (the scene module's one reader; a mesh without data/materials/<stem>.json has none).
   const auto stem = std::filesystem::path(o.mesh).stem().string();
-  if (o.normalMap.empty()) o.normalMap = findDataTexture(stem, "normal_map").string();
-  if (o.baseColor.empty()) o.baseColor = findDataTexture(stem, "base_color").string();
+  if (const auto file = materialFileFor(o.mesh); std::filesystem::exists(file)) {
+    if (auto material = readDataMaterial(file)) {
+      if (o.normalMap.empty()) o.normalMap = material->textures.normalMap.string();
+      if (o.baseColor.empty()) o.baseColor = material->textures.baseColor.string();
+    }
+  }
   if (o.width <= 0 || o.height <= 0) return fail(cmd, "--width and --height must be positive pixels");
   if (o.method == "raymarch")
     return runRayMarchRender(o.mesh, o.out, o.width, o.height, o.marchSamples, o.adaptive, global);

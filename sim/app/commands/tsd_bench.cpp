@@ -15,6 +15,7 @@
 #include "tissue/core/statistics.h"
 #include "tissue/core/stopwatch.h"
 #include "tissue/inspect/chart.h"
+#include "tissue/studies/tsd_bench.h"
 #include "tissue/studies/tsd_error.h"
 
 namespace tissue::sim_app {
@@ -33,20 +34,8 @@ struct BenchOptions {
   bool accuracyOnly = false;  // skip the speed-up table
 };
 
-constexpr int kObjects[] = {1, 2, 4, 8, 16};
-constexpr float kDistances[] = {1.0f, 2.0f, 4.0f, 8.0f, 20.0f, 40.0f};  // x the organ's size
-
-/// The camera `distance` mm from the middle organ, looking down and along -z, light above right.
-render::Scene benchScene(Float3 target, float distance, float organSize, float rowLength) {
-  render::Scene scene;
-  const float dy = -0.35f, dz = -1.0f, n = std::hypot(dy, dz);
-  scene.camera.target = target;
-  scene.camera.eye = {target.x, target.y - dy / n * distance, target.z - dz / n * distance};
-  scene.camera.nearMm = std::max(distance - organSize, distance * 0.05f);
-  scene.camera.farMm = std::hypot(distance + organSize, rowLength);
-  scene.lights[0].positionMm = {target.x + 0.6f * distance, target.y + 0.9f * distance, target.z + distance};
-  return scene;
-}
+constexpr auto& kObjects = studies::kTsdBenchObjects;
+constexpr auto& kDistances = studies::kTsdBenchDistances;
 
 double median(const std::vector<double>& v) {
   return summarizeSamples(v).median;
@@ -76,43 +65,17 @@ int run(const BenchOptions& o, const GlobalOptions& global) {
         (*context)->procAddressFunction(),
         {.shaders = shaderSettingsFromEnvironment(), .samples = 0, .gpuTimers = false});
     if (!renderer) return fail(cmd, renderer.error().message);
-    // The row of organs, 1.1 organ widths apart: one mesh per instance (scene objects have no
-    // transform), instance i centred at x_i = (i - 7.5) 1.1 w; n organs are the middle n.
-    const Float3 centre{0.5f * (organ->lo.x + organ->hi.x), 0.5f * (organ->lo.y + organ->hi.y),
-                        0.5f * (organ->lo.z + organ->hi.z)};
-    const float width = organ->hi.x - organ->lo.x;
-    size = std::hypot(width, organ->hi.y - organ->lo.y, organ->hi.z - organ->lo.z);
-    constexpr int kMaxObjects = 16;
-    auto rowX = [&](int i) { return (float(i) - 0.5f * float(kMaxObjects - 1)) * 1.1f * width; };
-    std::vector<render::MeshHandle> meshes;
-    std::vector<Float3> positions(organ->mesh.positions.size());
-    for (int i = 0; i < kMaxObjects; ++i) {
-      for (std::size_t v = 0; v < positions.size(); ++v) {
-        const Float3 p = organ->mesh.positions[v];
-        positions[v] = {p.x - centre.x + rowX(i), p.y - centre.y, p.z - centre.z};
-      }
-      render::MeshArrays arrays = organ->arrays();
-      arrays.positions = positions;
-      auto handle = renderer->createMesh(arrays);
-      if (!handle) return fail(cmd, handle.error().message);
-      meshes.push_back(*handle);
-    }
+    // The row of organs (studies::uploadOrganRow), 1.1 organ widths apart.
+    auto row = studies::uploadOrganRow(*renderer, *organ);
+    if (!row) return fail(cmd, row.error().message);
+    size = row->sizeMm;
     render::TextureSpaceSettings plain, optimised;
     plain.gaussians = optimised.gaussians = *gaussians;
     plain.mapSize = optimised.mapSize = o.mapSize;
     plain.cull = plain.clip = plain.depthSize = false;
     // The middle `n` organs with `method`; the camera's target is their centre.
     auto sceneOf = [&](int n, float distance, const render::TextureSpaceSettings& method) {
-      const int first = kMaxObjects / 2 - (n + 1) / 2;
-      const float middle = 0.5f * (rowX(first) + rowX(first + n - 1));
-      render::Scene scene = benchScene({middle, 0, 0}, distance, size, float(n) * 1.1f * width);
-      for (int i = first; i < first + n; ++i) {
-        render::SceneObject object;
-        object.mesh = meshes[std::size_t(i)];
-        object.method = method;
-        scene.objects.push_back(object);
-      }
-      return scene;
+      return row->sceneOf(n, distance, method);
     };
     for (int objects : kObjects) {
       if (o.accuracyOnly) break;

@@ -1,14 +1,18 @@
-#include "sss_bench.h"
+// The SSS bench (sss_bench.h): timing and the reference comparison of every method setting.
+#include "tissue/studies/sss_bench.h"
 
 #include <algorithm>
 #include <utility>
 
-#include "organ_data.h"
 #include "tissue/core/statistics.h"
 #include "tissue/core/stopwatch.h"
+#include "tissue/core/vec_math.h"
+#include "tissue/materials/method_materials.h"
+#include "tissue/scene/material_file.h"
 #include "tissue/studies/coverage.h"
+#include "tissue/studies/texture_space_organ.h"
 
-namespace tissue::sim_app {
+namespace tissue::studies {
 namespace {
 
 double median(const std::vector<double>& v) {
@@ -16,6 +20,32 @@ double median(const std::vector<double>& v) {
 }
 
 }  // namespace
+
+Result<void> setUpSssBench(SssBenchContext& ctx, const scene::OrganAssets& organ) {
+  ctx.material = scene::opticalMaterial(organ.material);
+  auto truth = materials::makeSeparableMaterial(ctx.material, "preintegrated", 17);
+  if (!truth) return truth.error();
+  ctx.profiles = {reference::RadialProfile{}, truth->truth};
+  if (!organ.mesh.hasUvs()) return Error{"the SSS bench needs an organ with UVs"};
+  const TsdOrgan o = tsdOrganOf(organ.mesh);
+  auto handle = ctx.renderer->createMesh(o.arrays());
+  if (!handle) return handle.error();
+  render::SceneObject object;
+  object.mesh = *handle;
+  for (auto [image, slot] :
+       {std::pair{&organ.baseColor, &object.baseColor}, std::pair{&organ.normalMap, &object.normalMap}}) {
+    if (!image->has_value()) continue;
+    auto texture = ctx.renderer->createTexture(**image);
+    if (!texture) return texture.error();
+    *slot = *texture;
+  }
+  ctx.scene.lights[0].castsShadows = true;
+  ctx.scene.objects = {object};
+  ctx.scene.camera = render::frameBoundingBox(o.lo, o.hi, float(ctx.width) / float(ctx.height));
+  const Float3 c{(o.lo.x + o.hi.x) / 2, (o.lo.y + o.hi.y) / 2, (o.lo.z + o.hi.z) / 2};
+  ctx.scene.lights[0].positionMm = {c.x + 150.0f, c.y + 200.0f, o.hi.z + 300.0f};
+  return {};
+}
 
 Result<std::pair<double, double>> timeFrames(SssBenchContext& ctx, const std::string& passPrefix) {
   std::vector<double> frame, method;
@@ -60,17 +90,39 @@ Result<reference::ImageError> compareLastFrame(SssBenchContext& ctx) {
                                          ctx.reference, ctx.profiles);
 }
 
+Result<ReferenceError> lastFrameReferenceError(render::Renderer& renderer, const render::FloatImage& diffuse,
+                                               const render::FloatImage& position,
+                                               const reference::RadialProfile& truth) {
+  auto blurred = renderer.readFrame(render::FrameView::BlurredDiffuse);
+  if (!blurred) return blurred.error();
+  auto radiance = renderer.readFrame(render::FrameView::Radiance);
+  if (!radiance) return radiance.error();
+  std::vector<Float4> pre = diffuse.pixels;
+  dropPartialCoverage(pre, *radiance);  // MSAA silhouettes are not surface points
+  const reference::ScreenBuffers frame{diffuse.width, diffuse.height, pre, position.pixels};
+  const std::vector<reference::RadialProfile> profiles{{}, truth};
+  Stopwatch watch;
+  auto exact = reference::convolveScreen(frame, profiles);
+  if (!exact) return exact.error();
+  ReferenceError out;
+  out.referenceMs = watch.elapsedMs();
+  const auto e = reference::compareWithReference(frame, blurred->pixels, *exact, profiles);
+  out.imageRms = e.rms;
+  out.relativeRms = e.relativeRms;
+  return out;
+}
+
 namespace {
 
 // One separable row: kernel `model` with `taps` taps and `rank` components, timed and compared.
 Result<void> separableRow(SssBenchContext& ctx, const char* model, int taps, int rank,
-                          std::vector<SssBenchRow>& rows, nlohmann::json& skipped) {
-  auto material = makeSeparableMaterial(ctx.material, model, taps, rank);
+                          std::vector<SssBenchRow>& rows, std::vector<SssBenchSkip>& skipped) {
+  auto material = materials::makeSeparableMaterial(ctx.material, model, taps, rank);
   if (!material) {
-    skipped.push_back({{"method", "separable"},
-                       {"setting", std::string(model) + (rank > 1 ? std::to_string(rank) : "") + "-" +
-                                       std::to_string(taps)},
-                       {"reason", material.error().message}});
+    skipped.push_back(
+        {"separable",
+         std::string(model) + (rank > 1 ? std::to_string(rank) : "") + "-" + std::to_string(taps),
+         material.error().message});
     return {};
   }
   ctx.scene.objects.at(0).method = material->settings;
@@ -85,7 +137,8 @@ Result<void> separableRow(SssBenchContext& ctx, const char* model, int taps, int
 
 }  // namespace
 
-Result<std::vector<SssBenchRow>> separableBenchRows(SssBenchContext& ctx, nlohmann::json& skipped) {
+Result<std::vector<SssBenchRow>> separableBenchRows(SssBenchContext& ctx,
+                                                    std::vector<SssBenchSkip>& skipped) {
   std::vector<SssBenchRow> rows;
   for (const char* model : {"svd", "preintegrated", "guided", "manual", "deon", "jimenez"}) {
     for (const int taps : {7, 11, 17, 25}) {
@@ -103,17 +156,17 @@ Result<std::vector<SssBenchRow>> separableBenchRows(SssBenchContext& ctx, nlohma
   return rows;
 }
 
-Result<std::vector<SssBenchRow>> textureSpaceBenchRows(SssBenchContext& ctx, nlohmann::json& skipped) {
+Result<std::vector<SssBenchRow>> textureSpaceBenchRows(SssBenchContext& ctx,
+                                                       std::vector<SssBenchSkip>& skipped) {
   // The reference convolves a pre-blur (undiffused) frame: the separable rows' first frame.
   if (ctx.reference.empty())
     return Error{"texture-space rows need the reference of the separable rows; run those first"};
   std::vector<SssBenchRow> rows;
   for (const int n : {2, 4, 6}) {
     const std::string setting = std::to_string(n) + "-gaussians";
-    auto settings = makeTextureSpaceSettings(ctx.material, n);
+    auto settings = materials::makeTextureSpaceSettings(ctx.material, n);
     if (!settings) {
-      skipped.push_back(
-          {{"method", "texture-space"}, {"setting", setting}, {"reason", settings.error().message}});
+      skipped.push_back({"texture-space", setting, settings.error().message});
       continue;
     }
     ctx.scene.objects.at(0).method = *settings;
@@ -126,4 +179,4 @@ Result<std::vector<SssBenchRow>> textureSpaceBenchRows(SssBenchContext& ctx, nlo
   return rows;
 }
 
-}  // namespace tissue::sim_app
+}  // namespace tissue::studies

@@ -1,11 +1,10 @@
 #pragma once
 /// \file
-/// sss-bench: subsurface-scattering methods on one frame of the data liver, each setting timed
-/// and measured against the CPU reference (tissue::reference::convolveScreen with the
-/// material's dipole profile). Each method contributes rows through an SssBenchMethod entry in
-/// commands/sss_bench.cpp (separable here; texture-space adds its own).
+/// The SSS bench: subsurface-scattering methods on one frame of an organ, each setting timed and
+/// measured against the CPU reference (tissue::reference::convolveScreen with the material's
+/// dipole profile). Each method contributes rows through an SssBenchMethod entry (kSssBenchMethods).
+/// GL: the renderer's context must be current for every call.
 
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -13,8 +12,9 @@
 #include "tissue/optics/materials.h"
 #include "tissue/reference/screen_convolution.h"
 #include "tissue/render/renderer.h"
+#include "tissue/scene/organ_assets.h"
 
-namespace tissue::sim_app {
+namespace tissue::studies {
 
 /// One measured setting.
 struct SssBenchRow {
@@ -24,6 +24,11 @@ struct SssBenchRow {
   double methodMs = 0.0;     ///< ms, median CPU time of the method's own passes
   double imageRms = 0.0;     ///< RMS vs the reference, linear radiance (exposure 1)
   double relativeRms = 0.0;  ///< imageRms / mean reference radiance
+};
+
+/// A setting a method could not build for the material, and why.
+struct SssBenchSkip {
+  std::string method, setting, reason;
 };
 
 /// What every method's rows share: the renderer with the organ uploaded, the frame's scene (one
@@ -38,6 +43,11 @@ struct SssBenchContext {
   std::vector<Float4> diffuse, position;           ///< the pre-blur frame the reference convolves
   std::vector<Float3> reference;                   ///< the reference result, per pixel
 };
+
+/// Uploads `organ` (its own UVs; smooth normals and UV tangent frames, studies::tsdOrganOf) as
+/// the one object of ctx.scene with its base colour and normal map, a shadowed key light framed
+/// on it, and its material's first layer with the pre-integrated dipole profile as the truth.
+Result<void> setUpSssBench(SssBenchContext& ctx, const scene::OrganAssets& organ);
 
 /// Renders `ctx.scene` `ctx.frames` times (after one warm-up); median frame ms and the median
 /// summed CPU ms of the passes whose names start with `passPrefix`.
@@ -54,17 +64,39 @@ Result<reference::ImageError> compareLastFrame(SssBenchContext& ctx);
 /// The separable method's rows: every kernel model at 7, 11, 17 and 25 taps, then rank-R kernels
 /// (SVD rank 2 and 3, "svd2-17"; d'Eon 2 and 4 Gaussians, "deon4-17") at 11 and 17. Models that cannot
 /// be built for the material (e.g. manual without Table A.1 parameters) go to `skipped`.
-Result<std::vector<SssBenchRow>> separableBenchRows(SssBenchContext& ctx, nlohmann::json& skipped);
+Result<std::vector<SssBenchRow>> separableBenchRows(SssBenchContext& ctx, std::vector<SssBenchSkip>& skipped);
 
 /// The texture-space method's rows: 2, 4 and 6 Gaussians fitted to the material's dipole
 /// profile, all three irradiance-map optimisations on, T_max = 1024, pre-scatter albedo (the
 /// quantity the separable method blurs), compared with the same reference.
-Result<std::vector<SssBenchRow>> textureSpaceBenchRows(SssBenchContext& ctx, nlohmann::json& skipped);
+Result<std::vector<SssBenchRow>> textureSpaceBenchRows(SssBenchContext& ctx,
+                                                       std::vector<SssBenchSkip>& skipped);
+
+/// The image error of a frame's blurred diffuse against the exact convolution of its pre-blur one.
+struct ReferenceError {
+  double referenceMs = 0.0;  ///< ms, the CPU convolution's wall time
+  double imageRms = 0.0;     ///< RMS, linear radiance
+  double relativeRms = 0.0;  ///< imageRms / mean reference radiance
+};
+
+/// The renderer's last frame (its BlurredDiffuse, read back as it is) against the exact
+/// screen-space convolution (reference::convolveScreen with `truth` for object 1) of the pre-blur
+/// `diffuse` and `position` of the same frame, MSAA silhouettes dropped (dropPartialCoverage):
+/// the demo's measure of a method it switched to at run time.
+Result<ReferenceError> lastFrameReferenceError(render::Renderer& renderer, const render::FloatImage& diffuse,
+                                               const render::FloatImage& position,
+                                               const reference::RadialProfile& truth);
 
 /// A method of the bench: its name and how it makes its rows.
 struct SssBenchMethod {
   const char* name;
-  Result<std::vector<SssBenchRow>> (*rows)(SssBenchContext& ctx, nlohmann::json& skipped);
+  Result<std::vector<SssBenchRow>> (*rows)(SssBenchContext& ctx, std::vector<SssBenchSkip>& skipped);
 };
 
-}  // namespace tissue::sim_app
+/// The bench's methods, in the order of its results.
+inline constexpr SssBenchMethod kSssBenchMethods[] = {
+    {"separable", separableBenchRows},
+    {"texture-space", textureSpaceBenchRows},
+};
+
+}  // namespace tissue::studies
