@@ -318,8 +318,7 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
       renderer.renderSubsurface(*d.surface, d.organ, o.outDir / "frame_poked_separable.png", false);
   report["texture_space"] =
       renderer.renderSubsurface(*d.surface, d.organ, o.outDir / "frame_poked_texture_space.png", true);
-  report["raymarch"] =
-      renderPokedOrganRayMarch(*d.surface, d.organ.material.name, o.outDir, o.width, o.height);
+  report["raymarch"] = renderPokedOrganRayMarch(*d.surface, d.organ, o.outDir, o.width, o.height);
   report["parallax"] = renderer.renderParallax(*d.surface, d.organ, o.outDir / "frame_poked_parallax.png");
   // The scene a host embeds (scene::Scene, as the C API and the example hosts use it): the
   // simulated liver and a turned, scaled static copy in different methods, poked by a host.

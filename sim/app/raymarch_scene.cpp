@@ -79,20 +79,4 @@ nlohmann::json renderPokedOrganRayMarch(const mesh::DeformableSurface& surface,
   return report;
 }
 
-nlohmann::json renderPokedOrganRayMarch(const mesh::DeformableSurface& surface, const std::string& stem,
-                                        const std::filesystem::path& outDir, int width, int height) {
-  auto file = readDataMaterial(dataDir() / "materials" / (stem + ".json"));
-  if (!file) return {{"skipped", file.error().message}};
-  scene::OrganAssets organ;
-  organ.material = std::move(*file);
-  if (!organ.material.textures.subsurface.empty()) {
-    auto map = readImage(organ.material.textures.subsurface, 4);
-    if (!map)
-      return {{"skipped",
-               "subsurface map " + organ.material.textures.subsurface.string() + ": " + map.error().message}};
-    organ.subsurfaceMap = std::move(*map);
-  }
-  return renderPokedOrganRayMarch(surface, organ, outDir, width, height);
-}
-
 }  // namespace tissue::sim_app

@@ -46,9 +46,5 @@ int runRayMarchRender(const std::string& meshFile, const std::string& png, int w
 nlohmann::json renderPokedOrganRayMarch(const mesh::DeformableSurface& surface,
                                         const scene::OrganAssets& organ, const std::filesystem::path& outDir,
                                         int width, int height);
-/// The same with data/materials/<stem>.json and its subsurface map read here (demo_scenario.cpp
-/// still calls this; it could pass its scene::OrganAssets instead).
-nlohmann::json renderPokedOrganRayMarch(const mesh::DeformableSurface& surface, const std::string& stem,
-                                        const std::filesystem::path& outDir, int width, int height);
 
 }  // namespace tissue::sim_app
