@@ -5,28 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include "../subsurface/flat_quad.h"
+
 #include <vector>
 
 namespace tissue::studies {
 namespace {
 
-struct Quad {
-  std::vector<Float3> positions = {{-50, -50, 0}, {50, -50, 0}, {50, 50, 0}, {-50, 50, 0}};
-  std::vector<Float3> normals = std::vector<Float3>(4, Float3{0, 0, 1});
-  std::vector<Float4> tangents = std::vector<Float4>(4, Float4{1, 0, 0, 1});
-  std::vector<Float4> planes = std::vector<Float4>(4, Float4{0, 0, 1, 0});
-  std::vector<Float2> uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  std::vector<Triangle> triangles = {{0, 1, 2}, {0, 2, 3}};
-  subsurface::MeshView view() const {
-    return {positions,
-            normals,
-            tangents,
-            planes,
-            uvs,
-            triangles,
-            subsurface::uvPerMmOf(positions, uvs, triangles)};
-  }
-};
+using Quad = test::FlatQuad;
 
 TEST(RayMarchStudy, PlanesAreExactOnAFlatQuad) {
   const Quad q;

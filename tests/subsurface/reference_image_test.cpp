@@ -1,6 +1,8 @@
 // CPU images: camera rays, interpolation and the march together, against the flat-slab closed form.
 #include <gtest/gtest.h>
 
+#include "flat_quad.h"
+
 #include <cmath>
 #include <vector>
 
@@ -10,17 +12,7 @@
 namespace tissue::subsurface {
 namespace {
 
-struct Quad {
-  std::vector<Float3> positions = {{-50, -50, 0}, {50, -50, 0}, {50, 50, 0}, {-50, 50, 0}};
-  std::vector<Float3> normals = std::vector<Float3>(4, Float3{0, 0, 1});
-  std::vector<Float4> tangents = std::vector<Float4>(4, Float4{1, 0, 0, 1});
-  std::vector<Float4> planes = std::vector<Float4>(4, Float4{0, 0, 1, 0});
-  std::vector<Float2> uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  std::vector<Triangle> triangles = {{0, 1, 2}, {0, 2, 3}};
-  MeshView view() const {
-    return {positions, normals, tangents, planes, uvs, triangles, uvPerMmOf(positions, uvs, triangles)};
-  }
-};
+using Quad = test::FlatQuad;
 
 TEST(ReferenceImage, UvScaleOfAQuad) {
   const Quad q;

@@ -61,10 +61,13 @@ Result<OrganAssets> loadOrganAssets(const OrganSource& source) {
   }
   // 3 the textures the material names: all are painted on the file's own UVs, so none with the atlas.
   const MaterialTextures& t = organ.material.textures;
-  for (const auto& [file, slot] :
-       {std::pair{&t.baseColor, &organ.baseColor}, std::pair{&t.normalMap, &organ.normalMap},
-        std::pair{&t.opacity, &organ.opacity}, std::pair{&t.innerBase, &organ.innerBase},
-        std::pair{&t.subsurface, &organ.subsurfaceMap}}) {
+  const std::pair<const std::filesystem::path*, std::optional<Image8>*> textures[] = {
+      {&t.baseColor, &organ.baseColor},
+      {&t.normalMap, &organ.normalMap},
+      {&t.opacity, &organ.opacity},
+      {&t.innerBase, &organ.innerBase},
+      {&t.subsurface, &organ.subsurfaceMap}};
+  for (const auto& [file, slot] : textures) {
     if (organ.atlas) break;
     auto image = readIfNamed(*file);
     if (!image) return image.error();
