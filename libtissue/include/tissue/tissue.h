@@ -83,6 +83,7 @@
 #include "tissue/studies/raymarch_scene.h"
 #include "tissue/studies/raymarch_study.h"
 #include "tissue/studies/refit_study.h"
+#include "tissue/studies/report.h"
 #include "tissue/studies/sim_bench.h"
 #include "tissue/studies/sss_bench.h"
 #include "tissue/studies/texture_space_organ.h"
