@@ -3,6 +3,9 @@
 # tree (default build-novtk/ beside build/, or $TISSUE_NOVTK_BUILD_DIR). Run by
 # scripts/run-tests.sh after the main ctest; not a ctest test itself (it builds the project).
 #   tests/package/no_vtk_build.sh [extra cmake options]
+# With -DTISSUE_SANITIZE=address,undefined (scripts/run-tests.sh passes it) the tree is also the
+# sanitized one (ASan, LSan, UBSan; cmake/TissueSanitizers.cmake): any finding fails its test, and
+# the package test (it builds an unsanitized consumer) runs in the main tree only.
 # ccache is used when present. The "slow" (minutes, VTK-independent) and "style" (the same files
 # as the main tree) tests run in the main tree only.
 set -euo pipefail
@@ -23,7 +26,15 @@ if grep -rlis --include=link.txt 'libvtk\|vtk-9' "$build"; then
   echo "FAIL: targets of the no-VTK build link VTK (above)"
   exit 1
 fi
+exclude='slow|style'
+sanitize="$(sed -n 's/^TISSUE_SANITIZE:STRING=//p' "$build/CMakeCache.txt")"
+if [ -n "$sanitize" ]; then
+  exclude='slow|style|package'
+  export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
+  export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+  export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0"
+fi
 status=0
-ctest --test-dir "$build" --output-on-failure -j"$jobs" --timeout 900 -LE 'slow|style' || status=$?
-echo "no-VTK build: configure+build $((built - start)) s, ctest $(($(date +%s) - built)) s"
+ctest --test-dir "$build" --output-on-failure -j"$jobs" --timeout 900 -LE "$exclude" || status=$?
+echo "no-VTK build${sanitize:+ (sanitizers: $sanitize)}: configure+build $((built - start)) s, ctest $(($(date +%s) - built)) s"
 exit "$status"

@@ -48,7 +48,9 @@ TEST(Report, ABadChartFailsNamingItAfterTheTextFiles) {
   std::filesystem::remove_all(dir);
   Report r;
   r.add("kept.md", "kept\n");
-  r.charts.push_back({"bad.png", {.title = "empty"}, {}});  // no series: refused
+  inspect::ChartSettings settings;
+  settings.title = "empty";
+  r.charts.push_back({"bad.png", settings, {}});  // no series: refused
   auto ok = writeReport(dir, r);
   ASSERT_FALSE(ok);
   EXPECT_NE(ok.error().message.find("bad.png"), std::string::npos) << ok.error().message;

@@ -24,13 +24,6 @@ std::string csvCell(const std::string& cell) {
   return quoted + "\"";
 }
 
-std::string printed(const char* format, int digits, double value) {
-  if (std::isnan(value)) return "-";
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, digits, value);
-  return buffer;
-}
-
 }  // namespace
 
 std::string markdownTable(const Table& table) {
@@ -67,10 +60,17 @@ std::string csvTable(const Table& table) {
 }
 
 std::string fixed(double value, int digits) {
-  return printed("%.*f", digits, value);
+  if (std::isnan(value)) return "-";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", digits, value);
+  return buffer;
 }
+
 std::string general(double value, int digits) {
-  return printed("%.*g", digits, value);
+  if (std::isnan(value)) return "-";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
+  return buffer;
 }
 
 Result<void> writeReport(const std::filesystem::path& dir, const Report& report) {
