@@ -9,3 +9,15 @@ if(TISSUE_SANITIZE)
   add_compile_options(-fsanitize=${TISSUE_SANITIZE} -fno-sanitize-recover=all -fno-omit-frame-pointer -g1)
   add_link_options(-fsanitize=${TISSUE_SANITIZE})
 endif()
+
+# TISSUE_FUZZ: the libFuzzer targets of tests/fuzz (clang only). Every target of the tree gets
+# libFuzzer's coverage instrumentation (-fsanitize=fuzzer-no-link), so the fuzzers are guided
+# through the library's code and not only the harness; combine with TISSUE_SANITIZE.
+option(TISSUE_FUZZ "Build the libFuzzer targets of tests/fuzz (needs clang)" OFF)
+if(TISSUE_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+    message(FATAL_ERROR "TISSUE_FUZZ needs clang (libFuzzer): configure with -DCMAKE_C_COMPILER=clang "
+                        "-DCMAKE_CXX_COMPILER=clang++, or turn TISSUE_FUZZ off")
+  endif()
+  add_compile_options(-fsanitize=fuzzer-no-link)
+endif()
