@@ -10,11 +10,7 @@
 namespace tissue::sim_app {
 
 Result<RayMarchScene> loadRayMarchScene(const std::filesystem::path& meshFile, float aspect, bool closeUp) {
-  const scene::OrganSource source = organSourceFor(meshFile);
-  auto scene = studies::loadRayMarchScene(source, aspect, closeUp);
-  if (!scene && !std::filesystem::is_regular_file(source.material))
-    return Error{scene.error().message + " (ray marching needs a data/ mesh with a material file)"};
-  return scene;
+  return studies::loadRayMarchScene(organSourceFor(meshFile), aspect, closeUp);
 }
 
 Result<nlohmann::json> renderRayMarchPng(const RayMarchScene& scene, const render::RayMarchSettings& march,

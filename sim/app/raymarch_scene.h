@@ -25,8 +25,7 @@ using studies::pokeScene;
 using studies::RayMarchRender;
 using studies::RayMarchScene;
 
-/// Loads data/ mesh `meshFile` with its data/materials/<stem>.json (studies::loadRayMarchScene);
-/// the error says ray marching needs a data/ mesh with a material file.
+/// Loads data/ mesh `meshFile` with its data/materials/<stem>.json (studies::loadRayMarchScene).
 Result<RayMarchScene> loadRayMarchScene(const std::filesystem::path& meshFile, float aspect, bool closeUp);
 
 /// Renders `scene` with ray-marched single scattering on a new headless context into `png`
