@@ -30,11 +30,6 @@ Result<void> writeReportTo(studies::Report report, const ReportPlaces& places) {
   place(report.images, places.images, places.image, places.out);
   place(report.charts, "", places.chart, places.out);
   if (report.files.empty() && report.images.empty() && report.charts.empty()) return {};
-  if (!places.images.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(places.images, ec);
-    if (ec) return Error{"cannot create the folder " + places.images + ": " + ec.message()};
-  }
   return studies::writeReport(places.out.empty() ? std::string(".") : places.out, report);
 }
 

@@ -71,7 +71,7 @@ struct StudyOutput {
 /// Creates `dir` and writes the report's files and images (each atomically), then its charts.
 /// Fails on the first file, image or chart it cannot write, naming it; charts fail without VTK or
 /// an X server (inspect::writeLineChart), after every text file and image is written. A name may
-/// be a path (relative to `dir`, or absolute).
+/// be a path (relative to `dir`, or absolute); its folders are created.
 Result<void> writeReport(const std::filesystem::path& dir, const Report& report);
 
 }  // namespace tissue::studies
