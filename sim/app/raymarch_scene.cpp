@@ -5,54 +5,46 @@
 #include "gl_environment.h"
 #include "organ_data.h"
 #include "output.h"
-#include "tissue/context/headless_context.h"
 
 namespace tissue::sim_app {
+namespace {
 
-Result<RayMarchScene> loadRayMarchScene(const std::filesystem::path& meshFile, float aspect, bool closeUp) {
-  const scene::OrganSource source = organSourceFor(meshFile);
-  auto scene = studies::loadRayMarchScene(source, aspect, closeUp);
-  if (!scene && !std::filesystem::is_regular_file(source.material))
-    return Error{scene.error().message + " (ray marching needs a data/ mesh with a material file)"};
-  return scene;
-}
-
-Result<nlohmann::json> renderRayMarchPng(const RayMarchScene& scene, const render::RayMarchSettings& march,
-                                         int width, int height, const std::filesystem::path& png) {
+// Renders `scene` with ray-marched single scattering (`march`: the march and adaptive-quality
+// fields) on a new headless context into `png`; what it did (ms, context).
+Result<nlohmann::json> renderRayMarchPng(const studies::RayMarchScene& scene,
+                                         const render::RayMarchSettings& march, int width, int height,
+                                         const std::filesystem::path& png) {
   context::ContextRequest request;
   request.width = request.height = 16;  // the renderer draws into its own framebuffer
   auto context = createAppContext(request);
   if (!context) return context.error();
-  render::RendererSettings settings;
-  settings.shaders = shaderSettingsFromEnvironment();
-  settings.finishPasses = true;  // the ray-march pass is timed to completion
-  auto gpu = makeRayMarchRender(scene, (*context)->procAddressFunction(), settings);
+  // finishPasses: the ray-march pass is timed to completion.
+  auto gpu = studies::makeRayMarchRender(scene, (*context)->procAddressFunction(),
+                                         {.shaders = shaderSettingsFromEnvironment(), .finishPasses = true});
   if (!gpu) return gpu.error();
   gpu->setMarch(march);
   double passMs = 0.0;
   auto image = gpu->render(width, height, &passMs);
   if (!image) return image.error();
   if (auto w = writePng(png, *image); !w) return w.error();
-  nlohmann::json out;
-  out["out"] = png.string();
-  out["pass_ms"] = passMs;
-  out["gl_renderer"] = (*context)->info().renderer;
-  out["adaptive"] = march.adaptive;
-  if (march.adaptive)
-    out["max_samples"] = march.maxSamples;
-  else
-    out["samples"] = march.samples;
+  nlohmann::json out{{"out", png.string()},
+                     {"pass_ms", passMs},
+                     {"gl_renderer", (*context)->info().renderer},
+                     {"adaptive", march.adaptive}};
+  out[march.adaptive ? "max_samples" : "samples"] = march.adaptive ? march.maxSamples : march.samples;
   return out;
 }
 
+}  // namespace
+
 int runRayMarchRender(const std::string& meshFile, const std::string& png, int width, int height, int samples,
                       bool adaptive, const GlobalOptions& global) {
-  auto scene = loadRayMarchScene(meshFile, float(width) / float(height), false);
+  auto scene = studies::loadRayMarchScene(organSourceFor(meshFile), float(width) / float(height), false);
   if (!scene) return fail("render", scene.error().message);
   render::RayMarchSettings settings;
   settings.samples = std::clamp(samples, 1, 256);
   settings.adaptive = adaptive;
-  settings.radianceScale = kRayMarchRadianceScale;
+  settings.radianceScale = studies::kRayMarchRadianceScale;
   auto done = renderRayMarchPng(*scene, settings, width, height, png);
   if (!done) return fail("render", done.error().message);
   (*done)["method"] = "raymarch";
@@ -70,7 +62,7 @@ nlohmann::json renderPokedOrganRayMarch(const mesh::DeformableSurface& surface,
     // Adaptive quality: a quarter of the 100-sample cost (docs/RESULTS.md), so the main job stays quick.
     render::RayMarchSettings settings;
     settings.adaptive = true;
-    settings.radianceScale = kRayMarchRadianceScale;
+    settings.radianceScale = studies::kRayMarchRadianceScale;
     const std::string name = std::string("frame_poked_raymarch") + (closeUp ? "_closeup" : "") + ".png";
     auto done = renderRayMarchPng(*scene, settings, width, height, outDir / name);
     if (!done) return {{"skipped", done.error().message}};

@@ -16,25 +16,6 @@
 
 namespace tissue::sim_app {
 
-using studies::kRayMarchBackground;
-using studies::kRayMarchRadianceScale;
-using studies::makeRayMarchRender;
-using studies::meshView;
-using studies::pinholeOf;
-using studies::pokeScene;
-using studies::RayMarchRender;
-using studies::RayMarchScene;
-
-/// Loads data/ mesh `meshFile` with its data/materials/<stem>.json (studies::loadRayMarchScene);
-/// the error says ray marching needs a data/ mesh with a material file.
-Result<RayMarchScene> loadRayMarchScene(const std::filesystem::path& meshFile, float aspect, bool closeUp);
-
-/// Renders `scene` with ray-marched single scattering on a new headless context into `png`
-/// (written atomically), `width` x `height` pixels; returns what it did (ms, context).
-/// `march` gives the march and adaptive-quality fields (the material is the scene's).
-Result<nlohmann::json> renderRayMarchPng(const RayMarchScene& scene, const render::RayMarchSettings& march,
-                                         int width, int height, const std::filesystem::path& png);
-
 /// `tissue-sim render --method raymarch`: the whole organ of data/ mesh `meshFile`; prints the
 /// result like every command and returns the exit code.
 int runRayMarchRender(const std::string& meshFile, const std::string& png, int width, int height, int samples,

@@ -12,7 +12,6 @@ namespace tissue::sim_app {
 
 using studies::loadRenderMesh;
 using studies::loadTsdOrgan;
-using studies::skinProfileTable;
 using studies::TsdOrgan;
 
 /// d'Eon & Luebke's skin profile as `count` Gaussians (2, 4 or 6) from

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <variant>
 
+#include "data_organ.h"
 #include "tissue/context/headless_context.h"
 
 namespace tissue::studies {
@@ -83,6 +84,41 @@ TEST(ParallaxSceneGl, OneParallaxObjectWithTheInnerLayer) {
                      12;
     }
   EXPECT_GT(organPixels, w * h / 10);
+}
+
+// The study, small: one row per surface x depth x index (4 x 2 x 2), one cell per view angle; on
+// the plane the method is exact up to 75 degrees; one CSV line per cell; the four patch images at
+// the asked size, listed in the JSON under the caller's folder.
+TEST(ParallaxSceneGl, TheStudyAndItsReport) {
+  auto context = context::createHeadlessContext({}, {.backend = "", .log = false});
+  ASSERT_TRUE(context) << "no headless context (EGL, then OSMesa): " << context.error().message;
+  auto renderer = render::Renderer::create((*context)->procAddressFunction());
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  ParallaxStudyRun run;
+  run.study.samplePoints = 300;
+  run.imageWidth = 40, run.imageHeight = 30;
+  run.imageFolder = "out";
+  auto study = runParallaxStudy(*renderer, testdata::dataOrgan, run);
+  ASSERT_TRUE(study) << study.error().message;
+  ASSERT_EQ(study->rows.size(), 16u);
+  const std::size_t angles = run.study.viewAnglesDeg.size();
+  for (const ParallaxRow& r : study->rows) {
+    ASSERT_EQ(r.cells.size(), angles) << r.surface;
+    if (r.surface != "plane") continue;
+    for (const ParallaxCell& c : r.cells) {
+      EXPECT_GT(c.reached, 0) << c.viewAngleDeg;
+      if (c.viewAngleDeg <= 75.0f) {
+        EXPECT_NEAR(c.meanErrorMm, 0.0, 1e-3) << c.viewAngleDeg;
+      }
+    }
+  }
+  EXPECT_EQ(study->rows.back().surface, "tube");
+  const Report& report = study->output.report;
+  EXPECT_EQ(testdata::lineCount(testdata::fileText(report, "parallax_study.csv")), 16 * angles + 1);
+  ASSERT_EQ(report.images.size(), 4u);
+  EXPECT_EQ(report.images[3].name, "parallax_patch_85deg.png");
+  EXPECT_EQ(report.images[0].image.width, 40);
+  EXPECT_NE(study->output.json.find("out/parallax_patch_45deg.png"), std::string::npos);
 }
 
 }  // namespace

@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
+#include "data_organ.h"
 #include "tissue/context/headless_context.h"
 
 namespace tissue::studies {
@@ -61,6 +63,44 @@ TEST(RayMarchBenchGl, TimesEverySettingAndCountsSamples) {
   EXPECT_LE(samples->mean, double(adaptive.maxSamples));
   EXPECT_EQ(samples->image.width, w);
   EXPECT_FALSE(gpu->settings().showSamples);  // restored
+}
+
+// The whole bench, small: one row per setting in table order, more samples nearer the
+// reference (10 against 100), the adaptive mean within its bounds, the method near its CPU twin,
+// and the report's table, JSON keys, images and chart.
+TEST(RayMarchBenchGl, TheBenchAndItsReport) {
+  auto context = context::createHeadlessContext({}, {.backend = "", .log = false});
+  ASSERT_TRUE(context) << "no headless context (EGL, then OSMesa): " << context.error().message;
+  RayMarchBenchConfig config;
+  config.width = 32, config.height = 24;
+  config.referenceSamples = 40;
+  config.repeats = 1;
+  config.images = config.chart = true;
+  auto bench = runRayMarchBench((*context)->procAddressFunction(), {}, testdata::dataOrgan("liver"), config);
+  ASSERT_TRUE(bench) << bench.error().message;
+  const std::size_t n = std::size(kRayMarchBenchSettings);
+  ASSERT_EQ(bench->rows.size(), n);
+  EXPECT_EQ(bench->rows[0].setting, "10");
+  EXPECT_EQ(bench->rows[3].setting, "100");
+  EXPECT_EQ(bench->rows[4].setting, "adaptive");
+  for (const RayMarchBenchRow& r : bench->rows) {
+    EXPECT_GT(r.timing.ms, 0.0) << r.setting;
+    EXPECT_TRUE(std::isfinite(r.imageRms) && r.imageRms > 0.0 && r.imageRms < 1.0) << r.setting;
+  }
+  EXPECT_GT(bench->rows[0].imageRms, bench->rows[3].imageRms);
+  EXPECT_GE(bench->rows[4].samples, double(config.adaptive.minSamples));
+  EXPECT_LE(bench->rows[4].samples, double(config.adaptive.maxSamples));
+  EXPECT_GT(bench->adaptiveMsRatioVs100, 0.0);
+  EXPECT_LT(bench->gpuVsCpuModel50, 0.1);
+  EXPECT_GT(bench->referenceMs, 0.0);
+  const Report& report = bench->output.report;
+  EXPECT_EQ(testdata::lineCount(testdata::fileText(report, "raymarch_bench.csv")), n + 1);
+  for (const char* key : {"\"plane_approximation_rms\"", "\"gpu_vs_cpu_model_radiance_rel_rms_50\"",
+                          "\"ms_ratio_vs_100\"", "\"cpu_ms\""})
+    EXPECT_NE(bench->output.json.find(key), std::string::npos) << key;
+  EXPECT_EQ(report.images.size(), n + 5);  // each setting, the samples, the two references, the twins
+  ASSERT_EQ(report.charts.size(), 1u);
+  EXPECT_EQ(report.charts[0].series[0].x.size(), n - 1);
 }
 
 }  // namespace

@@ -58,5 +58,27 @@ TEST(Report, ABadChartFailsNamingItAfterTheTextFiles) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(Report, WritesImagesAndTakesPathsAsNames) {
+  const auto dir = std::filesystem::temp_directory_path() / "tissue_report_image_test";
+  const auto elsewhere = std::filesystem::temp_directory_path() / "tissue_report_image_elsewhere.png";
+  std::filesystem::remove_all(dir);
+  std::filesystem::remove(elsewhere);
+  Image8 image(3, 2, 4);
+  image.at(2, 1)[0] = 200;
+  Report r;
+  r.images.push_back({"sub/one.png", image});
+  r.images.push_back({elsewhere.string(), image});  // absolute: the folder does not apply
+  r.add("sub/one.md", "x\n");
+  ASSERT_TRUE(writeReport(dir, r));
+  auto back = readImage(dir / "sub" / "one.png");
+  ASSERT_TRUE(back) << back.error().message;
+  EXPECT_EQ(back->width, 3);
+  EXPECT_EQ(back->height, 2);
+  EXPECT_EQ(back->at(2, 1)[0], 200);
+  EXPECT_TRUE(std::filesystem::exists(elsewhere));
+  std::filesystem::remove_all(dir);
+  std::filesystem::remove(elsewhere);
+}
+
 }  // namespace
 }  // namespace tissue::studies

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "data_organ.h"
 #include "tissue/context/headless_context.h"
 #include "tissue/materials/method_materials.h"
 
@@ -39,23 +40,34 @@ TEST(SssBenchGl, RowsAreMeasuredAgainstTheReference) {
   EXPECT_EQ(ctx.material.name, organ->material.name);
   std::vector<SssBenchSkip> skipped;
   EXPECT_FALSE(textureSpaceBenchRows(ctx, skipped));  // no reference yet
-  std::size_t rows = 0;
-  for (const SssBenchMethod& method : kSssBenchMethods) {
-    auto r = method.rows(ctx, skipped);
-    ASSERT_TRUE(r) << method.name << ": " << r.error().message;
-    for (const SssBenchRow& row : *r) {
-      EXPECT_EQ(row.method, method.name);
-      EXPECT_GT(row.ms, 0.0);
-      EXPECT_TRUE(std::isfinite(row.imageRms) && row.imageRms >= 0.0) << row.setting;
-      EXPECT_LT(row.relativeRms, 1.0) << row.setting;
-    }
-    rows += r->size();
+  // The whole bench on the same renderer: every method's rows, each timed and measured.
+  auto bench = runSssBench(*renderer, source,
+                           {.width = 40, .height = 30, .frames = 1, .samples = 0, .glRenderer = "x"});
+  ASSERT_TRUE(bench) << bench.error().message;
+  std::size_t textureSpace = 0;
+  for (const SssBenchRow& row : bench->rows) {
+    EXPECT_GT(row.ms, 0.0);
+    EXPECT_TRUE(std::isfinite(row.imageRms) && row.imageRms >= 0.0) << row.setting;
+    EXPECT_LT(row.relativeRms, 1.0) << row.setting;
+    textureSpace += row.method == "texture-space";
   }
-  EXPECT_EQ(ctx.reference.size(), std::size_t(ctx.width * ctx.height));
+  EXPECT_EQ(bench->rows.front().method, "separable");  // the methods in kSssBenchMethods' order
+  EXPECT_EQ(bench->rows.back().method, "texture-space");
   // 24 single-rank and 8 rank-R separable settings, 3 texture-space ones: each a row or a skip.
-  EXPECT_EQ(rows + skipped.size(), 35u);
-  for (const SssBenchSkip& s : skipped)
+  EXPECT_EQ(bench->rows.size() + bench->skipped.size(), 35u);
+  EXPECT_EQ(textureSpace, 3u);
+  for (const SssBenchSkip& s : bench->skipped)
     EXPECT_FALSE(s.reason.empty()) << s.setting;
+  // The report: one table row per measured setting, the JSON as the command prints it.
+  const Report& report = bench->output.report;
+  EXPECT_EQ(testdata::lineCount(testdata::fileText(report, "sss_bench.csv")), bench->rows.size() + 1);
+  EXPECT_EQ(testdata::fileText(report, "sss_bench.json"), bench->output.json + "\n");
+  for (const char* key : {"\"method_ms\"", "\"relative_rms\"", "\"skipped\"", "\"gl_renderer\": \"x\""})
+    EXPECT_NE(bench->output.json.find(key), std::string::npos) << key;
+  source.material = "missing.json";
+  auto missing = runSssBench(*renderer, source, {});
+  ASSERT_FALSE(missing);
+  EXPECT_NE(missing.error().message.find("material for"), std::string::npos) << missing.error().message;
 }
 
 }  // namespace

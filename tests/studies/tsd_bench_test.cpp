@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "data_organ.h"
 #include "tissue/context/headless_context.h"
 
 namespace tissue::studies {
@@ -45,6 +46,48 @@ TEST(TsdBenchGl, TheRowAndItsMiddleOrgans) {
   const render::Scene one = row->sceneOf(1, row->sizeMm, tsd);
   auto image = renderer->renderImage(one, 32, 24);
   ASSERT_TRUE(image) << image.error().message;
+}
+
+// The accuracy rows, small: 2, 4 and 6 Gaussians without and with the optimisations, each
+// diffused map within the reference's own signal (relative RMS below 1) at the asked size; no
+// speed-up table, so no speed-up CSV and no chart even when asked; Jimenez's Table 1 in the JSON.
+TEST(TsdBenchGl, AccuracyRowsAndTheirReport) {
+  auto organ = loadTsdOrgan(testdata::dataOrgan("liver").mesh, 1.0f);
+  ASSERT_TRUE(organ) << organ.error().message;
+  auto context = context::createHeadlessContext({}, {.backend = "", .log = false});
+  ASSERT_TRUE(context) << "no headless context (EGL, then OSMesa): " << context.error().message;
+  auto renderer = render::Renderer::create((*context)->procAddressFunction());
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  TsdBenchConfig config;
+  config.width = 64, config.height = 40;  // the optimised map is sized from the viewport
+  config.mapSize = 64;
+  config.repeats = 1;
+  config.accuracyOnly = config.chart = true;
+  config.skinTable = std::filesystem::path(TISSUE_TEST_SHARED_DIR) / "reference" / "deon_skin_gaussians.tsv";
+  auto bench = runTsdBench(*renderer, *organ, config);
+  ASSERT_TRUE(bench) << bench.error().message;
+  EXPECT_TRUE(bench->speedup.empty());
+  ASSERT_EQ(bench->accuracy.size(), 6u);
+  for (std::size_t i = 0; i < 6; ++i) {
+    const TsdAccuracyRow& a = bench->accuracy[i];
+    EXPECT_EQ(a.gaussians, 2 + 2 * int(i / 2));
+    EXPECT_EQ(a.optimised, i % 2 == 1);
+    EXPECT_GT(a.ms, 0.0);
+    EXPECT_TRUE(std::isfinite(a.error.rms) && a.error.rms > 0.0);
+    EXPECT_LT(a.error.relative, 1.0);
+    if (!a.optimised) {
+      EXPECT_EQ(a.mapSize, config.mapSize);  // unoptimised: the full map
+    }
+  }
+  EXPECT_GT(bench->referenceTexels, 100u);
+  const Report& report = bench->output.report;
+  EXPECT_EQ(testdata::lineCount(testdata::fileText(report, "tsd_bench_accuracy.csv")), 7u);
+  EXPECT_TRUE(testdata::fileText(report, "tsd_bench_speedup.csv").empty());
+  EXPECT_TRUE(report.charts.empty());
+  EXPECT_NE(bench->output.json.find("\"interior_relative_rms\""), std::string::npos);
+  EXPECT_NE(bench->output.json.find("2.77"), std::string::npos);  // Table 1, 16 heads at 100
+  config.gaussians = 3;
+  EXPECT_FALSE(runTsdBench(*renderer, *organ, config));
 }
 
 }  // namespace

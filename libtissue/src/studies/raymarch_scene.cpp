@@ -3,6 +3,7 @@
 #include "tissue/studies/raymarch_scene.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <utility>
 
 #include "tissue/core/vec_math.h"
@@ -36,6 +37,8 @@ Result<materials::RayMarchMaterial> rayMarchMaterialFor(const mesh::DeformableSu
 Result<RayMarchScene> loadRayMarchScene(scene::OrganSource source, float aspect, bool closeUp) {
   source.uvAtlasFallback = false;  // the subsurface map is painted on the file's UVs
   auto organ = scene::loadOrganAssets(source);
+  if (!organ && !std::filesystem::is_regular_file(source.material))
+    return Error{organ.error().message + " (ray marching needs a mesh with a material file)"};
   if (!organ) return organ.error();
   // Plane neighbourhoods from the first layer's extinction (François eq. 8).
   auto surface = mesh::DeformableSurface::create(organ->mesh, organ->planes, 2);

@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <nlohmann/json.hpp>
 #include <vector>
+
+#include "tissue/studies/raymarch_scene.h"
 
 namespace tissue::studies {
 
@@ -54,6 +57,64 @@ RayMarchStudy studyRayMarch(const subsurface::MeshView& mesh, const subsurface::
   };
   out.planes = errors(out.planesImage);
   out.few = errors(out.fewImage);
+  return out;
+}
+
+Result<RayMarchStudyResult> runRayMarchStudy(
+    const std::function<scene::OrganSource(const std::string&)>& organSource,
+    const RayMarchStudyConfig& config, bool images) {
+  RayMarchStudyResult out;
+  nlohmann::json cases = nlohmann::json::array();
+  const std::string few = std::to_string(config.fewSamples);
+  Table table{{"case", "plane", "plane grazing", "plane frontal", few + " samples", few + " grazing",
+               few + " frontal", "what"},
+              {}};
+  for (const RayMarchStudyCase& c : kRayMarchStudyCases) {
+    const std::string name = c.name;
+    auto scene = loadRayMarchScene(organSource(c.mesh), float(config.width) / float(config.height), true);
+    if (!scene) return Error{name + ": " + scene.error().message};
+    if (c.pokeDepthMm > 0.0f)
+      if (auto poked = pokeScene(*scene, 0.02, c.pokeDepthMm); !poked)
+        return Error{name + ": " + poked.error().message};
+    RayMarchStudy r = studyRayMarch(meshView(*scene), scene->material.stack, scene->lights,
+                                    pinholeOf(scene->camera), config);
+    cases.push_back({{"case", name},
+                     {"what", c.what},
+                     {"plane_rms", r.planes.all},
+                     {"plane_rms_grazing", r.planes.grazing},
+                     {"plane_rms_frontal", r.planes.frontal},
+                     {"samples10_rms", r.few.all},
+                     {"samples10_rms_grazing", r.few.grazing},
+                     {"samples10_rms_frontal", r.few.frontal}});
+    table.rows.push_back({name, fixed(r.planes.all, 4), fixed(r.planes.grazing, 4),
+                          fixed(r.planes.frontal, 4), fixed(r.few.all, 4), fixed(r.few.grazing, 4),
+                          fixed(r.few.frontal, 4), c.what});
+    if (images) {
+      const std::string stem = "raymarch_fail_" + name;
+      auto& list = out.output.report.images;
+      list.push_back({stem + "_plane_error_x8.png", differenceImage(r.planesImage, r.reference)});
+      list.push_back({stem + "_reference.png", std::move(r.reference)});
+      list.push_back({stem + "_10samples.png", std::move(r.fewImage)});
+    }
+    out.cases.push_back({name, c.what, r.planes, r.few});
+  }
+  const nlohmann::json json{{"width", config.width},
+                            {"height", config.height},
+                            {"reference_samples", config.referenceSamples},
+                            {"cases", cases}};
+  out.output.json = json.dump(2);
+  out.output.summary = markdownTable(table);
+  out.output.report.add(
+      "raymarch_study.md",
+      "# Where ray-marched subsurface texture mapping fails\n\nDisplay RMS (0..1) against the mesh-entry "
+      "march (" +
+          std::to_string(config.referenceSamples) + " samples), " + std::to_string(config.width) + " x " +
+          std::to_string(config.height) + " pixels: the plane approximation (same samples) and " + few +
+          " jittered samples, over all covered pixels, the grazing ones (N.V < 0.3) and the frontal ones "
+          "(N.V >= 0.7); -1: no pixel in the band.\n\n" +
+          out.output.summary);
+  out.output.report.add("raymarch_study.csv", csvTable(table));
+  out.output.report.add("raymarch_study.json", out.output.json + "\n");
   return out;
 }
 

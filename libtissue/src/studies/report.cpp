@@ -74,14 +74,33 @@ std::string general(double value, int digits) {
 }
 
 Result<void> writeReport(const std::filesystem::path& dir, const Report& report) {
+  // Each entry's folder (the report's, or one its name gives), created before it is written.
+  auto folderOf = [&dir](const std::string& name) -> Result<std::filesystem::path> {
+    const std::filesystem::path path = dir / name;
+    std::error_code ec;
+    std::filesystem::create_directories(path.parent_path(), ec);
+    if (ec) return Error{"cannot create the folder " + path.parent_path().string() + ": " + ec.message()};
+    return path;
+  };
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) return Error{"cannot create the folder " + dir.string() + ": " + ec.message()};
-  for (const auto& file : report.files)
-    if (auto ok = writeTextFileAtomic(dir / file.name, file.text); !ok) return ok;
-  for (const auto& chart : report.charts)
-    if (auto ok = inspect::writeLineChart(dir / chart.name, chart.settings, chart.series); !ok)
+  for (const auto& file : report.files) {
+    auto path = folderOf(file.name);
+    if (!path) return path.error();
+    if (auto ok = writeTextFileAtomic(*path, file.text); !ok) return ok;
+  }
+  for (const auto& image : report.images) {
+    auto path = folderOf(image.name);
+    if (!path) return path.error();
+    if (auto ok = writePng(*path, image.image); !ok) return Error{image.name + ": " + ok.error().message};
+  }
+  for (const auto& chart : report.charts) {
+    auto path = folderOf(chart.name);
+    if (!path) return path.error();
+    if (auto ok = inspect::writeLineChart(*path, chart.settings, chart.series); !ok)
       return Error{chart.name + ": " + ok.error().message};
+  }
   return {};
 }
 

@@ -2,6 +2,8 @@
 #include "tissue/studies/sss_bench.h"
 
 #include <algorithm>
+#include <filesystem>
+#include <nlohmann/json.hpp>
 #include <utility>
 
 #include "tissue/core/statistics.h"
@@ -177,6 +179,76 @@ Result<std::vector<SssBenchRow>> textureSpaceBenchRows(SssBenchContext& ctx,
     rows.push_back({"texture-space", setting, ms->first, ms->second, error->rms, error->relativeRms});
   }
   return rows;
+}
+
+Result<SssBenchResult> runSssBench(render::Renderer& renderer, const scene::OrganSource& source,
+                                   const SssBenchConfig& config) {
+  const std::string mesh = source.mesh.string();
+  if (config.width <= 0 || config.height <= 0 || config.frames <= 0)
+    return Error{"the SSS bench needs a positive width, height and frame count"};
+  scene::OrganSource own = source;
+  own.uvAtlasFallback = false;  // the base colour and normal map belong to the file's UVs
+  auto organ = scene::loadOrganAssets(own);
+  if (!organ) {
+    if (!std::filesystem::is_regular_file(own.material))
+      return Error{"material for " + mesh + ": " + organ.error().message};
+    return Error{mesh + ": " + organ.error().message};
+  }
+  SssBenchContext ctx;
+  ctx.renderer = &renderer;
+  ctx.width = config.width;
+  ctx.height = config.height;
+  ctx.frames = config.frames;
+  if (auto r = setUpSssBench(ctx, *organ); !r) return Error{mesh + ": " + r.error().message};
+  SssBenchResult out;
+  for (const SssBenchMethod& method : kSssBenchMethods) {
+    auto rows = method.rows(ctx, out.skipped);
+    if (!rows) return Error{std::string(method.name) + ": " + rows.error().message};
+    out.rows.insert(out.rows.end(), rows->begin(), rows->end());
+  }
+  nlohmann::json results = nlohmann::json::array(), skipped = nlohmann::json::array();
+  Table table{{"method", "setting", "ms", "method ms", "image RMS", "relative RMS"}, {}};
+  for (const SssBenchRow& r : out.rows) {
+    results.push_back({{"method", r.method},
+                       {"setting", r.setting},
+                       {"ms", r.ms},
+                       {"method_ms", r.methodMs},
+                       {"image_rms", r.imageRms},
+                       {"relative_rms", r.relativeRms}});
+    table.rows.push_back({r.method, r.setting, fixed(r.ms, 2), fixed(r.methodMs, 2), general(r.imageRms, 4),
+                          fixed(r.relativeRms, 4)});
+  }
+  for (const SssBenchSkip& skip : out.skipped)
+    skipped.push_back({{"method", skip.method}, {"setting", skip.setting}, {"reason", skip.reason}});
+  const char* referenceText =
+      "exact screen-space convolution with the normalised dipole profile (tissue::reference)";
+  const nlohmann::json json{{"mesh", mesh},
+                            {"material", ctx.material.name},
+                            {"width", config.width},
+                            {"height", config.height},
+                            {"frames", config.frames},
+                            {"samples", config.samples},
+                            {"gl_renderer", config.glRenderer},
+                            {"reference", referenceText},
+                            {"results", results},
+                            {"skipped", skipped}};
+  out.output.json = json.dump(2);
+  out.output.summary = markdownTable(table);
+  std::string md = "# SSS bench: " + mesh + " (" + ctx.material.name + ")\n\n" +
+                   std::to_string(config.width) + " x " + std::to_string(config.height) + " pixels, " +
+                   std::to_string(config.frames) + " frames per setting (median), MSAA " +
+                   std::to_string(config.samples) + ", " + config.glRenderer +
+                   ". Reference: " + referenceText + ".\n\n" + out.output.summary;
+  if (!out.skipped.empty()) {
+    Table skips{{"method", "setting", "skipped because"}, {}};
+    for (const SssBenchSkip& skip : out.skipped)
+      skips.rows.push_back({skip.method, skip.setting, skip.reason});
+    md += "\n" + markdownTable(skips);
+  }
+  out.output.report.add("sss_bench.md", std::move(md));
+  out.output.report.add("sss_bench.csv", csvTable(table));
+  out.output.report.add("sss_bench.json", out.output.json + "\n");
+  return out;
 }
 
 }  // namespace tissue::studies

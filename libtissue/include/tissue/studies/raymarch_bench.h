@@ -8,12 +8,14 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "tissue/core/image.h"
 #include "tissue/core/result.h"
 #include "tissue/core/types.h"
 #include "tissue/studies/raymarch_scene.h"
+#include "tissue/studies/report.h"
 
 namespace tissue::studies {
 
@@ -58,5 +60,63 @@ struct RayMarchTiming {
 Result<std::vector<RayMarchTiming>> timeRayMarchSettings(RayMarchRender& gpu,
                                                          const render::RayMarchSettings& adaptive, int width,
                                                          int height, int repeats);
+
+/// François et al. 2006, Table 2: frames per second of their renderer at 800 x 600 pixels by
+/// samples along the view ray (10, 50, 100), for the fish and the gecko model.
+inline constexpr int kFrancoisTable2Samples[] = {10, 50, 100};
+inline constexpr double kFrancoisTable2FishFps[] = {126.0, 51.0, 20.0};
+inline constexpr double kFrancoisTable2GeckoFps[] = {120.0, 33.0, 16.0};
+
+/// What `tissue-sim raymarch-bench` asks of the bench.
+struct RayMarchBenchConfig {
+  int width = 240, height = 180;      ///< pixels
+  int referenceSamples = 200;         ///< samples per pixel of the CPU reference (mesh entry, midpoint rule)
+  int repeats = 7;                    ///< timed frames per setting (median)
+  float pokeDepthMm = 8.0f;           ///< mm, the poke before the bench; 0 = rest shape
+  bool closeUp = true;                ///< frame the poke site (false: the whole organ)
+  render::RayMarchSettings adaptive;  ///< its adaptive-quality fields
+  bool images =
+      false;  ///< add the images (raymarch_<setting>.png, raymarch_samples.png, raymarch_reference.png, ...)
+  bool chart = false;      ///< add the chart of error against time (raymarch_error_vs_time.png)
+  std::string glRenderer;  ///< GL_RENDERER of the caller's context, for the report
+};
+
+/// One setting of the table.
+struct RayMarchBenchRow {
+  std::string setting;          ///< "10", "25", "50", "100", "adaptive"
+  double samples = 0.0;         ///< per pixel (the adaptive march: mean over covered pixels)
+  RayMarchTiming timing;        ///< ms
+  double imageRms = 0.0;        ///< display RMS against the CPU reference (0..1)
+  double radianceRelRms = 0.0;  ///< relative RMS in linear radiance against it
+};
+
+/// The bench's figures and report: raymarch_bench.json (mesh, width, height, poke_depth_mm,
+/// repeats, gl_renderer, reference {samples, entry, cpu_ms}, results [setting, samples, ms,
+/// gpu_ms, image_rms, radiance_rel_rms; adaptive also rms_vs_100, radiance_rel_rms_vs_100,
+/// ms_ratio_vs_100], plane_approximation_rms, plane_approximation_radiance_rel_rms,
+/// gpu_vs_cpu_model_radiance_rel_rms_50, paper), raymarch_bench.md (ours and Table 2),
+/// raymarch_bench.csv (one row per setting), and the images and chart when asked.
+struct RayMarchBenchResult {
+  std::vector<RayMarchBenchRow> rows;  ///< in kRayMarchBenchSettings' order
+  double referenceMs = 0.0;            ///< ms, the CPU reference
+  /// The adaptive march against the 100-sample one: display RMS, relative radiance RMS, time ratio.
+  double adaptiveRmsVs100 = 0.0, adaptiveRadianceRelRmsVs100 = 0.0, adaptiveMsRatioVs100 = -1.0;
+  /// The CPU march with the fitted planes' entry against the mesh entry (François eq. 9-10, 14-15).
+  double planeRms = 0.0, planeRadianceRelRms = 0.0;
+  /// The pipeline at 50 samples against the CPU model with the same jitter, relative radiance RMS.
+  double gpuVsCpuModel50 = 0.0;
+  StudyOutput output;
+};
+
+/// The bench: loads `source` (a mesh with its material file and subsurface map), pokes it, renders
+/// the CPU reference (mesh entry, many samples, no early stop) and the plane-entry image, then on
+/// a pipeline renderer made on the caller's current context (`settings`, finishPasses forced on)
+/// times and measures every setting of the table, the adaptive march's samples, and the method
+/// against its CPU twin. The renderer is released before returning; the chart is only described
+/// (the caller draws it with writeReport after releasing its GL context).
+Result<RayMarchBenchResult> runRayMarchBench(const gl::GetProcAddressFn& getProcAddress,
+                                             render::RendererSettings settings,
+                                             const scene::OrganSource& source,
+                                             const RayMarchBenchConfig& config);
 
 }  // namespace tissue::studies

@@ -43,7 +43,8 @@ struct RayMarchScene {
 /// Loads `source` (scene::loadOrganAssets; the mesh must have its own usable UVs, since the
 /// subsurface map is painted on them) for images of `aspect` = width/height. `closeUp` frames a
 /// 40 mm wide region around the poke site instead of the whole organ. The planes' neighbourhoods
-/// come from the first layer's extinction (François eq. 8).
+/// come from the first layer's extinction (François eq. 8). Without the material file the error
+/// says ray marching needs one.
 Result<RayMarchScene> loadRayMarchScene(scene::OrganSource source, float aspect, bool closeUp);
 
 /// The same for a surface the caller owns and keeps alive (e.g. the demo's poked organ), with

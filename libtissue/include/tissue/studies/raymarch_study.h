@@ -5,11 +5,17 @@
 /// samples, each against the mesh-mode march (the light enters through the actual mesh) with
 /// many samples, in display RMS over all covered pixels, the grazing ones (N.V < 0.3) and the
 /// frontal ones (N.V >= 0.7). Computed with the CPU model (tissue::subsurface), which the GL
-/// tests show equals the shader. GL-free.
+/// tests show equals the shader. GL-free (the cases' organs load through raymarch_scene.h).
 
+#include <functional>
 #include <span>
+#include <string>
+#include <vector>
 
 #include "tissue/core/image.h"
+#include "tissue/core/result.h"
+#include "tissue/scene/organ_assets.h"
+#include "tissue/studies/report.h"
 #include "tissue/subsurface/reference_image.h"
 
 namespace tissue::studies {
@@ -44,5 +50,45 @@ double displayRmsWhere(const Image8& a, const Image8& b, const subsurface::Radia
 
 /// |a - b| x `gain` per RGB channel (clamped to 255), alpha 255: where an approximation goes wrong.
 Image8 differenceImage(const Image8& a, const Image8& b, int gain = 8);
+
+/// One case of `tissue-sim raymarch-study`: a mesh (by file stem), poked or not.
+struct RayMarchStudyCase {
+  const char* name;
+  const char* mesh;   ///< file stem: the caller's organ source names the files
+  float pokeDepthMm;  ///< mm; 0 = rest shape
+  const char* what;
+};
+
+/// The study's cases: the control (a nearly flat dome), the liver at rest and poked 8 and 16 mm
+/// deep (large deformation), and the bowel tube (high curvature).
+inline constexpr RayMarchStudyCase kRayMarchStudyCases[] = {
+    {"patch", "patch", 0.0f, "nearly flat (250 mm dome), rest shape"},
+    {"liver", "liver", 0.0f, "liver top, rest shape"},
+    {"liver_poke8", "liver", 8.0f, "liver poked 8 mm deep"},
+    {"liver_poke16", "liver", 16.0f, "liver poked 16 mm deep (large deformation)"},
+    {"tube", "tube", 0.0f, "bowel tube, radius 8-12 mm (high curvature)"},
+};
+
+/// One case's errors.
+struct RayMarchCaseResult {
+  std::string name, what;
+  RayMarchErrors planes, few;
+};
+
+/// Every case and the report: raymarch_study.json (width, height, reference_samples, cases [case,
+/// what, plane_rms, plane_rms_grazing, plane_rms_frontal, samples10_rms, samples10_rms_grazing,
+/// samples10_rms_frontal]), raymarch_study.md, raymarch_study.csv (one row per case), and with
+/// `images` per case raymarch_fail_<case>_reference.png, _10samples.png and _plane_error_x8.png.
+struct RayMarchStudyResult {
+  std::vector<RayMarchCaseResult> cases;
+  StudyOutput output;
+};
+
+/// Runs every case of kRayMarchStudyCases: the organ of `organSource(mesh stem)` (a mesh with its
+/// material file and subsurface map, closed-up on the poke site), poked 2% of its vertices deep,
+/// through studyRayMarch. Errors name the case.
+Result<RayMarchStudyResult> runRayMarchStudy(
+    const std::function<scene::OrganSource(const std::string&)>& organSource,
+    const RayMarchStudyConfig& config = {}, bool images = false);
 
 }  // namespace tissue::studies

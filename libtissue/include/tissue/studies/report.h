@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "tissue/core/image.h"
 #include "tissue/core/result.h"
 #include "tissue/inspect/chart.h"
 
@@ -43,17 +44,34 @@ struct ReportChart {
   std::vector<inspect::ChartSeries> series;
 };
 
+/// One image of a report: a PNG (writePng).
+struct ReportImage {
+  std::string name;  ///< e.g. "raymarch_100.png"
+  Image8 image;
+};
+
 /// What a study writes.
 struct Report {
   std::vector<ReportFile> files;
   std::vector<ReportChart> charts;
+  std::vector<ReportImage> images;
   /// Adds a text file.
   void add(std::string name, std::string text) { files.push_back({std::move(name), std::move(text)}); }
 };
 
-/// Creates `dir` and writes the report's files (each atomically), then its charts. Fails on the
-/// first file or chart it cannot write, naming it; charts fail without VTK or an X server
-/// (inspect::writeLineChart), after every text file is written.
+/// What a study or bench hands its caller besides its numbers: the report to write, its JSON
+/// object as text (also one of the report's files) for --json, and a short text summary (its
+/// main Markdown table) for a terminal.
+struct StudyOutput {
+  Report report;
+  std::string json;
+  std::string summary;
+};
+
+/// Creates `dir` and writes the report's files and images (each atomically), then its charts.
+/// Fails on the first file, image or chart it cannot write, naming it; charts fail without VTK or
+/// an X server (inspect::writeLineChart), after every text file and image is written. A name may
+/// be a path (relative to `dir`, or absolute); its folders are created.
 Result<void> writeReport(const std::filesystem::path& dir, const Report& report);
 
 }  // namespace tissue::studies

@@ -13,6 +13,7 @@
 #include "tissue/reference/screen_convolution.h"
 #include "tissue/render/renderer.h"
 #include "tissue/scene/organ_assets.h"
+#include "tissue/studies/report.h"
 
 namespace tissue::studies {
 
@@ -98,5 +99,28 @@ inline constexpr SssBenchMethod kSssBenchMethods[] = {
     {"separable", separableBenchRows},
     {"texture-space", textureSpaceBenchRows},
 };
+
+/// What `tissue-sim sss-bench` asks of the bench.
+struct SssBenchConfig {
+  int width = 320, height = 240;  ///< pixels
+  int frames = 5;                 ///< timed frames per setting (median)
+  int samples = 0;                ///< the caller's renderer's MSAA samples (for the report)
+  std::string glRenderer;         ///< GL_RENDERER of the caller's context (for the report)
+};
+
+/// The bench's rows, its skips and its report: sss_bench.json (the JSON: mesh, material, width,
+/// height, frames, samples, gl_renderer, reference, results [method, setting, ms, method_ms,
+/// image_rms, relative_rms], skipped [method, setting, reason]), sss_bench.md and sss_bench.csv
+/// (one table row per measured setting).
+struct SssBenchResult {
+  std::vector<SssBenchRow> rows;
+  std::vector<SssBenchSkip> skipped;
+  StudyOutput output;
+};
+
+/// Loads `source` (its own UVs; no atlas), sets the bench up on `renderer` (its context current)
+/// and runs every method of kSssBenchMethods. Errors name the mesh or the method.
+Result<SssBenchResult> runSssBench(render::Renderer& renderer, const scene::OrganSource& source,
+                                   const SssBenchConfig& config);
 
 }  // namespace tissue::studies
