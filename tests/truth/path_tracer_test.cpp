@@ -145,6 +145,7 @@ TEST(PathTracer, SingleScatteringMatchesLayeredSlabClosedForm) {
   PathTraceSettings s = probeSettings(100, 2);
   s.estimator = Estimator::SingleScattering;
   s.jitter = false;
+  s.intersector = Intersector::Bvh;  // the BVH here, the best back end (Embree where built) in the others
   const TruthImage image = render(box, material, camera, s, {&light, 1});
   const Estimate pt = imageMean(image);
   Rgb analytic{};
@@ -204,6 +205,43 @@ TEST(PathTracer, EnergyIsConservedWithoutAbsorption) {
   const TruthImage c = render(box, material, probe({0, 0, 0}, {0, 0, 1}), capped, {&light, 1});
   EXPECT_GT(c.cappedPaths, 0);
   EXPECT_LE(c.cappedPaths, c.paths);
+}
+
+// Per-texel layering: one subsurface map whose boundaries are at depth 0 on the left quarter of the
+// texture (u <= 0.25: the top layer vanishes) and at 0.25 mm on the right quarter. A probe on the
+// left reads the deep layer alone, one on the right the two-layer stack with constant depths.
+TEST(PathTracer, PerTexelLayersFollowTheSubsurfaceMaps) {
+  const test::SlabBox box(50.0f, 4.0f);
+  const TruthLayer top = layer({2.0, 0.1, 0.5}, {8.0, 1.0, 6.0}, {0.5, 0.5, 0.5}, 1.4, 0.25);
+  const TruthLayer deep = layer({0.5, 1.0, 0.3}, {2.0, 5.0, 1.0}, {0.8, 0.8, 0.8}, 1.4);
+  TruthMaterial maps;
+  maps.layers = {top, top, top, top, deep};
+  maps.maps = {.width = 2, .height = 1, .mapCount = 1, .depths = {0, 0, 0, 0, 0.25f, 0.25f, 0.25f, 0.25f}};
+  maps.depthScaleMm = 1.0f;
+  TruthMaterial twoLayers, deepOnly;
+  twoLayers.layers = {top, deep};
+  deepOnly.layers = {deep};
+  const TruthLight light = overheadLight();
+  const PathTraceSettings s = probeSettings(32, 1);
+  const TruthCamera left = probe({-40, 0, 0}, {0, 0, 1}), right = probe({40, 0, 0}, {0, 0, 1});
+  const Estimate mapsLeft = imageMean(render(box, maps, left, s, {&light, 1}));
+  const Estimate mapsRight = imageMean(render(box, maps, right, s, {&light, 1}));
+  const Estimate refLeft = imageMean(render(box, deepOnly, left, s, {&light, 1}));
+  const Estimate refRight = imageMean(render(box, twoLayers, right, s, {&light, 1}));
+  bool distinguishable = false;
+  for (std::size_t b = 0; b < 3; ++b) {
+    expectWithin3Sigma("left: deep layer only", mapsLeft.mean[b], mapsLeft.stderrs[b], refLeft.mean[b],
+                       refLeft.stderrs[b]);
+    expectWithin3Sigma("right: 0.25 mm over deep", mapsRight.mean[b], mapsRight.stderrs[b], refRight.mean[b],
+                       refRight.stderrs[b]);
+    distinguishable |= std::abs(refLeft.mean[b] - refRight.mean[b]) >
+                       10.0 * std::hypot(refLeft.stderrs[b], refRight.stderrs[b]);
+  }
+  EXPECT_TRUE(distinguishable) << "the two stacks must differ for the test to see the maps";
+  // Without UVs per-texel layering is refused.
+  auto r = renderPathTraced({box.positions, box.triangles, {}}, maps, {&light, 1}, left, s);
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error().message.find("needs the mesh's UVs"), std::string::npos);
 }
 
 // Deterministic for a seed whatever the thread count; progressive passes reported and stoppable.

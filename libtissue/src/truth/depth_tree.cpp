@@ -88,9 +88,10 @@ std::uint32_t DepthTree::build(std::uint32_t first, std::uint32_t count) {
   return index;
 }
 
-NearestPoint DepthTree::nearest(const glm::dvec3& p) const {
+NearestPoint DepthTree::nearest(const glm::dvec3& p, double maxDistanceMm) const {
   NearestPoint best{std::numeric_limits<double>::infinity()};
-  double best2 = std::numeric_limits<double>::infinity();
+  double best2 = maxDistanceMm * maxDistanceMm;
+  bool found = false;
   if (m_nodes.empty()) return best;
   std::uint32_t stack[64];
   int top = 0;
@@ -117,10 +118,11 @@ NearestPoint DepthTree::nearest(const glm::dvec3& p) const {
       if (d2 < best2) {
         best2 = d2;
         best = {0.0, m_order[i], w.x, w.y};
+        found = true;
       }
     }
   }
-  best.distanceMm = std::sqrt(best2);
+  best.distanceMm = found ? std::sqrt(best2) : std::numeric_limits<double>::infinity();
   return best;
 }
 

@@ -24,7 +24,9 @@ struct NearestPoint {
 class DepthTree {
  public:
   DepthTree(std::span<const Float3> positions, std::span<const Triangle> triangles);
-  NearestPoint nearest(const glm::dvec3& p) const;
+  /// The nearest surface point within `maxDistanceMm` of p; distanceMm = infinity when there is
+  /// none (the bound prunes the search: only the layers' deepest boundary matters).
+  NearestPoint nearest(const glm::dvec3& p, double maxDistanceMm) const;
 
  private:
   struct Node {

@@ -98,10 +98,15 @@ class Transport {
     if (m_perTexel) {
       m_stack.maps = material.maps;
       m_stack.depthScaleMm = material.depthScaleMm;
+      float deepest = 0.0f;
+      for (float v : material.maps.depths)
+        deepest = std::max(deepest, v);
+      m_deepestBoundaryMm = 1.001 * double(deepest) * double(material.depthScaleMm) + 1e-9;
     } else {
       double depth = 0.0;
       for (std::size_t i = 0; i + 1 < material.layers.size(); ++i)
         m_boundaryMm.push_back(depth += material.layers[i].thicknessMm);
+      m_deepestBoundaryMm = 1.001 * depth + 1e-9;
     }
     if (m_layerCount > 1) m_depth = std::make_unique<detail::DepthTree>(mesh.positions, mesh.triangles);
     for (const TruthLight& l : lights) {
@@ -208,7 +213,8 @@ class Transport {
   // The layer at interior point p: by its depth, the distance to the nearest surface point.
   int layerAt(const V& p) const {
     if (m_layerCount == 1) return 0;
-    const detail::NearestPoint np = m_depth->nearest(p);
+    const detail::NearestPoint np = m_depth->nearest(p, m_deepestBoundaryMm);
+    if (!std::isfinite(np.distanceMm)) return m_layerCount - 1;  // below every boundary
     if (!m_perTexel) {
       int layer = 0;
       while (layer < int(m_boundaryMm.size()) && m_boundaryMm[std::size_t(layer)] <= np.distanceMm)
@@ -335,6 +341,7 @@ class Transport {
   bool m_perTexel = false;
   subsurface::LayerStack m_stack;
   std::vector<double> m_boundaryMm;
+  double m_deepestBoundaryMm = 0.0;  // mm, slightly beyond the deepest boundary: the search radius
   std::unique_ptr<detail::DepthTree> m_depth;
   std::vector<PreparedLight> m_lights;
 };
