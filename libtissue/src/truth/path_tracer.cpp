@@ -56,6 +56,15 @@ struct PreparedLight {
   bool shadows = true;
 };
 
+// The path's last nearest-surface query (Transport::layerAt).
+struct DepthCache {
+  V x{0.0};              // where, mm
+  double depthMm = 0.0;  // its depth, mm (a lower bound when not exact)
+  bool exact = false;
+  bool valid = false;
+};
+constexpr double kDepthBallMm = 1.0;  // mm searched beyond the deepest boundary
+
 // Per-thread tallies (integers: their sum does not depend on the split between threads).
 struct PathStats {
   std::int64_t capped = 0;
@@ -127,6 +136,7 @@ class Transport {
     const bool single = m_settings.estimator == Estimator::SingleScattering;
     double radiance = 0.0, weight = 1.0;
     bool inside = false;
+    DepthCache cache;
     for (int events = 0;; ++events) {
       if (events >= m_settings.maxInteractions) {
         ++stats.capped;
@@ -164,12 +174,12 @@ class Transport {
       const double toBoundary = hitDistance(*hit, o, d);
       if (flight < toBoundary) {
         const V y = o + flight * d;
-        const LayerBand& layer = m_layers[b][static_cast<std::size_t>(layerAt(y))];
+        const LayerBand& layer = m_layers[b][static_cast<std::size_t>(layerAt(y, cache))];
         o = y;
         if (layer.sigmaT < majorant && rng.uniform() * majorant >= layer.sigmaT) continue;  // null collision
         ++stats.interactions;
         weight *= layer.sigmaS / layer.sigmaT;  // the collision estimator's albedo weight
-        radiance += weight * nextEvent(band, y, d, layer.g, rng);
+        radiance += weight * nextEvent(band, y, d, layer.g, rng, cache);
         if (single) break;
         d = detail::scatterDirection(d, optics::sampleHenyeyGreenstein(layer.g, rng.uniform()),
                                      rng.uniform());
@@ -210,17 +220,25 @@ class Transport {
     return std::abs(dn) > 1e-9 ? glm::dot(m_faceVertex[hit.triangle] - o, n) / dn : hit.t;
   }
 
-  // The layer at interior point p: by its depth, the distance to the nearest surface point.
-  int layerAt(const V& p) const {
+  // The layer at interior point p: by its depth, the distance to the nearest surface point. The
+  // depth is 1-Lipschitz, so a query at x bounds it within |p - x| of x's depth: `cache` keeps the
+  // path's last query and skips those whose layer the bound already decides (exact, no bias).
+  int layerAt(const V& p, DepthCache& cache) const {
     if (m_layerCount == 1) return 0;
-    const detail::NearestPoint np = m_depth->nearest(p, m_deepestBoundaryMm);
-    if (!std::isfinite(np.distanceMm)) return m_layerCount - 1;  // below every boundary
-    if (!m_perTexel) {
-      int layer = 0;
-      while (layer < int(m_boundaryMm.size()) && m_boundaryMm[std::size_t(layer)] <= np.distanceMm)
-        ++layer;
-      return layer;
+    if (cache.valid) {
+      const double s = glm::length(p - cache.x);
+      if (cache.depthMm - s > m_deepestBoundaryMm) return m_layerCount - 1;
+      if (cache.exact && !m_perTexel) {
+        const int lo = constantDepthLayer(std::max(0.0, cache.depthMm - s));
+        if (lo == constantDepthLayer(cache.depthMm + s)) return lo;
+      }
     }
+    // Search a little beyond the deepest boundary, so that deep points get a ball to reuse.
+    const double radius = m_deepestBoundaryMm + kDepthBallMm;
+    const detail::NearestPoint np = m_depth->nearest(p, radius);
+    cache = {p, std::isfinite(np.distanceMm) ? np.distanceMm : radius, std::isfinite(np.distanceMm), true};
+    if (!std::isfinite(np.distanceMm) || np.distanceMm > m_deepestBoundaryMm) return m_layerCount - 1;
+    if (!m_perTexel) return constantDepthLayer(np.distanceMm);
     const Triangle& t = m_mesh.triangles[np.triangle];
     const double w0 = 1.0 - np.b1 - np.b2;
     const Float2 a = m_mesh.uvs[t[0]], b = m_mesh.uvs[t[1]], c = m_mesh.uvs[t[2]];
@@ -229,9 +247,17 @@ class Transport {
     return subsurface::findLayer(subsurface::sampleBoundaries(m_stack, uv), float(np.distanceMm));
   }
 
+  int constantDepthLayer(double depthMm) const {
+    int layer = 0;
+    while (layer < int(m_boundaryMm.size()) && m_boundaryMm[std::size_t(layer)] <= depthMm)
+      ++layer;
+    return layer;
+  }
+
   // Transmittance along x + t dir, t in [0, length]: exact in one layer, ratio tracking
   // (Cramer 1978; Novák et al. 2014) against the majorant in several.
-  double transmittance(int band, const V& x, const V& dir, double length, RandomStream& rng) const {
+  double transmittance(int band, const V& x, const V& dir, double length, RandomStream& rng,
+                       DepthCache& cache) const {
     const auto b = static_cast<std::size_t>(band);
     if (m_layerCount == 1) return std::exp(-m_layers[b][0].sigmaT * length);
     const double majorant = m_majorant[b];
@@ -240,7 +266,7 @@ class Transport {
     while (true) {
       t -= std::log(rng.uniform()) / majorant;
       if (t >= length) return tr;
-      tr *= 1.0 - m_layers[b][static_cast<std::size_t>(layerAt(x + t * dir))].sigmaT / majorant;
+      tr *= 1.0 - m_layers[b][static_cast<std::size_t>(layerAt(x + t * dir, cache))].sigmaT / majorant;
       if (tr <= 0.0) return 0.0;
     }
   }
@@ -253,7 +279,7 @@ class Transport {
   // refracts into the tissue, travels unscattered to y and scatters into -d. The connection through
   // the boundary is found on the mesh by a fixed point: refract the light at a guessed face normal,
   // trace back from y, repeat with the face met until it is the same (exact on flat faces).
-  double nextEvent(int band, const V& y, const V& d, double g, RandomStream& rng) const {
+  double nextEvent(int band, const V& y, const V& d, double g, RandomStream& rng, DepthCache& cache) const {
     const auto b = static_cast<std::size_t>(band);
     const double eta = m_nAmbient / m_nTissue;
     double sum = 0.0;
@@ -285,7 +311,7 @@ class Transport {
       const double transmitted = 1.0 - optics::fresnelReflectance(m_nAmbient, m_nTissue, cosI).reflectance;
       // Collimated irradiance inside: the flux T E cos(theta_i) per unit area over cos(theta_t).
       const double irradianceInside = transmitted * light.irradiance[b] * cosI / cosT;
-      const double tr = transmittance(band, y, -travel, length, rng);
+      const double tr = transmittance(band, y, -travel, length, rng, cache);
       if (tr <= 0.0) continue;
       if (light.shadows &&
           occluded(q + m_eps * n, toLight, light.directional ? kInf : glm::length(light.position - q)))
