@@ -290,6 +290,26 @@ TEST(PathTracer, DeterministicAcrossThreadCountsAndProgressive) {
   EXPECT_EQ(stopped->samplesPerPixel, 2);
 }
 
+// A point light far away along the normal is the directional light (the renderer's lamp has no
+// falloff): the connection through the boundary converges to the same refracted direction.
+TEST(PathTracer, FarPointLightIsTheDirectionalLight) {
+  const test::SlabBox box(50.0f, 3.0f);
+  TruthMaterial material;
+  material.layers = {layer({0.5, 1.0, 2.0}, {5.0, 4.0, 3.0}, {0.8, 0.5, 0.0}, 1.4)};
+  const TruthLight directional = overheadLight();
+  TruthLight point = directional;
+  point.type = TruthLightType::Point;
+  point.positionMm = {0.0f, 0.0f, 1e6f};
+  const PathTraceSettings s = probeSettings(8, 1);
+  const TruthImage a = render(box, material, probe({0, 0, 0}, {0, 0, 1}), s, {&directional, 1});
+  const TruthImage b = render(box, material, probe({0, 0, 0}, {0, 0, 1}), s, {&point, 1});
+  const Estimate ea = imageMean(a), eb = imageMean(b);
+  for (std::size_t c = 0; c < 3; ++c) {
+    EXPECT_GT(ea.mean[c], 0.0);
+    EXPECT_NEAR(eb.mean[c], ea.mean[c], 1e-4 * ea.mean[c]);  // same paths, directions within 1e-4 rad
+  }
+}
+
 // Bad input: one Error that names what is wrong and how to fix it.
 TEST(PathTracer, BadInputGetsOneClearError) {
   const test::SlabBox box(10.0f, 1.0f);
