@@ -354,7 +354,7 @@ TEST(PathTracer, BadInputGetsOneClearError) {
   expectError(box.mesh(), maps, "give 4N + 1 layers");
 }
 
-// Both ray back ends answer the same nearest hits on the slab.
+// Both back ends answer the same nearest hits and nearest surface points on the slab.
 TEST(PathTracer, RayBackEndsAgree) {
   const test::SlabBox box(50.0f, 3.0f);
   auto bvh = makeRayMesh(box.positions, box.triangles, Intersector::Bvh);
@@ -376,6 +376,19 @@ TEST(PathTracer, RayBackEndsAgree) {
     const auto he = (*embree)->intersect(o, d, 0.0, 1e9);
     ASSERT_TRUE(hb && he);  // from inside a closed box every ray meets it
     EXPECT_NEAR(hb->t, he->t, 1e-4 * hb->t + 1e-5);
+  }
+  // Nearest surface points: the depth below the nearer of top (z = 0) and bottom (z = -3), or
+  // nothing within the bound.
+  for (int i = 0; i < 100; ++i) {
+    const std::array<double, 3> p{20.0 * std::sin(0.9 * i), 20.0 * std::cos(0.4 * i),
+                                  -3.0 * (i + 0.5) / 100.0};
+    const double depth = std::min(-p[2], 3.0 + p[2]);
+    const auto nb = (*bvh)->nearest(p, 10.0), ne = (*embree)->nearest(p, 10.0);
+    ASSERT_TRUE(nb && ne);
+    EXPECT_NEAR(nb->distanceMm, depth, 1e-9);
+    EXPECT_NEAR(ne->distanceMm, depth, 1e-9);
+    EXPECT_FALSE((*bvh)->nearest(p, 0.9 * depth).has_value());
+    EXPECT_FALSE((*embree)->nearest(p, 0.9 * depth).has_value());
   }
 }
 

@@ -10,8 +10,14 @@ namespace {
 
 constexpr std::uint32_t kLeafSize = 4;
 
-// Closest point on triangle abc to p (Ericson 2005, §5.1.5): the Voronoi region of p among the
-// vertices, edges and face; returns the barycentric weights (of b and c) of the closest point.
+double boxDistance2(const glm::dvec3& p, const glm::dvec3& lo, const glm::dvec3& hi) {
+  const glm::dvec3 d = glm::max(glm::max(lo - p, p - hi), glm::dvec3(0.0));
+  return glm::dot(d, d);
+}
+
+}  // namespace
+
+// The Voronoi region of p among the triangle's vertices, edges and face (Ericson 2005, §5.1.5).
 glm::dvec2 closestOnTriangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
                              const glm::dvec3& c) {
   const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
@@ -35,13 +41,6 @@ glm::dvec2 closestOnTriangle(const glm::dvec3& p, const glm::dvec3& a, const glm
   const double denom = 1.0 / (va + vb + vc);
   return {vb * denom, vc * denom};
 }
-
-double boxDistance2(const glm::dvec3& p, const glm::dvec3& lo, const glm::dvec3& hi) {
-  const glm::dvec3 d = glm::max(glm::max(lo - p, p - hi), glm::dvec3(0.0));
-  return glm::dot(d, d);
-}
-
-}  // namespace
 
 DepthTree::DepthTree(std::span<const Float3> positions, std::span<const Triangle> triangles)
     : m_triangles(triangles.begin(), triangles.end()) {
@@ -88,11 +87,11 @@ std::uint32_t DepthTree::build(std::uint32_t first, std::uint32_t count) {
   return index;
 }
 
-NearestPoint DepthTree::nearest(const glm::dvec3& p, double maxDistanceMm) const {
-  NearestPoint best{std::numeric_limits<double>::infinity()};
+std::optional<SurfacePoint> DepthTree::nearest(const glm::dvec3& p, double maxDistanceMm) const {
+  SurfacePoint best;
   double best2 = maxDistanceMm * maxDistanceMm;
   bool found = false;
-  if (m_nodes.empty()) return best;
+  if (m_nodes.empty()) return std::nullopt;
   std::uint32_t stack[64];
   int top = 0;
   stack[top++] = 0;
@@ -122,7 +121,8 @@ NearestPoint DepthTree::nearest(const glm::dvec3& p, double maxDistanceMm) const
       }
     }
   }
-  best.distanceMm = found ? std::sqrt(best2) : std::numeric_limits<double>::infinity();
+  if (!found) return std::nullopt;
+  best.distanceMm = std::sqrt(best2);
   return best;
 }
 

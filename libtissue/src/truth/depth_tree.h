@@ -1,32 +1,30 @@
 #pragma once
 // Private: the depth of a point inside the mesh, its distance to the nearest surface point, with
-// that point's triangle and barycentrics (for its texture coordinate). A median-split BVH over
-// the triangles, traversed nearest box first (Ericson, Real-Time Collision Detection, 2005,
-// §5.1.5 for the closest point on a triangle, §6 for the hierarchy).
+// that point's triangle and barycentrics (for its texture coordinate), for the BVH back end of
+// RayMesh. A median-split BVH over the triangles, traversed nearest box first (Ericson, Real-Time Collision
+// Detection, 2005, §5.1.5 for the closest point on a triangle, §6 for the hierarchy).
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "tissue/core/types.h"
+#include "tissue/truth/ray_mesh.h"
 
 namespace tissue::truth::detail {
 
-/// The nearest surface point.
-struct NearestPoint {
-  double distanceMm = 0.0;
-  std::uint32_t triangle = 0;
-  double b1 = 0.0, b2 = 0.0;  ///< barycentric weights of the second and third vertex
-};
+/// Closest point on triangle abc to p (Ericson 2005, §5.1.5): the barycentric weights of b and c.
+glm::dvec2 closestOnTriangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
+                             const glm::dvec3& c);
 
 class DepthTree {
  public:
   DepthTree(std::span<const Float3> positions, std::span<const Triangle> triangles);
-  /// The nearest surface point within `maxDistanceMm` of p; distanceMm = infinity when there is
-  /// none (the bound prunes the search: only the layers' deepest boundary matters).
-  NearestPoint nearest(const glm::dvec3& p, double maxDistanceMm) const;
+  /// The nearest surface point within `maxDistanceMm` of p, or none.
+  std::optional<SurfacePoint> nearest(const glm::dvec3& p, double maxDistanceMm) const;
 
  private:
   struct Node {

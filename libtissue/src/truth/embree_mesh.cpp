@@ -1,13 +1,18 @@
 // The Embree 3 adapter: the only file that includes Embree (rtcore.h). One device and one scene
-// with one triangle geometry; nearest-hit queries through rtcIntersect1, which is thread safe on a
-// committed scene.
+// with one triangle geometry; nearest-hit queries through rtcIntersect1 and nearest-point queries
+// through rtcPointQuery, both thread safe on a committed scene.
 #include "embree_mesh.h"
+
+#include <glm/glm.hpp>
 
 #include <embree3/rtcore.h>
 
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
+
+#include "depth_tree.h"
 
 namespace tissue::truth::detail {
 namespace {
@@ -33,7 +38,12 @@ std::string deviceError(RTCDevice device) {
 
 class EmbreeMesh final : public RayMesh {
  public:
-  EmbreeMesh(RTCDevice device, RTCScene scene) : m_device(device), m_scene(scene) {}
+  EmbreeMesh(RTCDevice device, RTCScene scene, std::span<const Float3> positions,
+             std::span<const Triangle> triangles)
+      : m_device(device), m_scene(scene), m_triangles(triangles.begin(), triangles.end()) {
+    for (const Float3& p : positions)
+      m_positions.emplace_back(p.x, p.y, p.z);
+  }
   ~EmbreeMesh() override {
     rtcReleaseScene(m_scene);
     rtcReleaseDevice(m_device);
@@ -64,11 +74,54 @@ class EmbreeMesh final : public RayMesh {
     // Embree's u, v weigh the second and third vertex, as MeshHit's b1, b2.
     return MeshHit{double(rh.ray.tfar), rh.hit.primID, double(rh.hit.u), double(rh.hit.v)};
   }
+  // rtcPointQuery walks Embree's hierarchy with a sphere that shrinks as triangles come closer;
+  // the distances themselves are computed here in double precision.
+  std::optional<SurfacePoint> nearest(const std::array<double, 3>& p, double maxDistanceMm) const override {
+    PointQuery data{this, {p[0], p[1], p[2]}, maxDistanceMm * maxDistanceMm, {}, false};
+    RTCPointQuery query;
+    query.x = float(p[0]);
+    query.y = float(p[1]);
+    query.z = float(p[2]);
+    query.time = 0.0f;
+    query.radius = float(maxDistanceMm) * (1.0f + 1e-6f);
+    RTCPointQueryContext context;
+    rtcInitPointQueryContext(&context);
+    rtcPointQuery(m_scene, &query, &context, &EmbreeMesh::visit, &data);
+    if (!data.found) return std::nullopt;
+    data.best.distanceMm = std::sqrt(data.best2);
+    return data.best;
+  }
   Intersector kind() const override { return Intersector::Embree; }
 
  private:
+  struct PointQuery {
+    const EmbreeMesh* self;
+    glm::dvec3 p;
+    double best2;
+    SurfacePoint best;
+    bool found;
+  };
+  // Called for each triangle whose bounds meet the query sphere; true when it shrinks the sphere.
+  static bool visit(RTCPointQueryFunctionArguments* args) {
+    auto* data = static_cast<PointQuery*>(args->userPtr);
+    const EmbreeMesh& m = *data->self;
+    const Triangle& t = m.m_triangles[args->primID];
+    const glm::dvec3 &a = m.m_positions[t[0]], &b = m.m_positions[t[1]], &c = m.m_positions[t[2]];
+    const glm::dvec2 w = closestOnTriangle(data->p, a, b, c);
+    const glm::dvec3 q = a + w.x * (b - a) + w.y * (c - a);
+    const double d2 = glm::dot(q - data->p, q - data->p);
+    if (d2 >= data->best2) return false;
+    data->best2 = d2;
+    data->best = {0.0, args->primID, w.x, w.y};
+    data->found = true;
+    args->query->radius = float(std::sqrt(d2)) * (1.0f + 1e-6f);
+    return true;
+  }
+
   RTCDevice m_device;
   RTCScene m_scene;
+  std::vector<glm::dvec3> m_positions;
+  std::vector<Triangle> m_triangles;
 };
 
 }  // namespace
@@ -114,7 +167,7 @@ Result<std::unique_ptr<RayMesh>> makeEmbreeMesh(std::span<const Float3> position
     rtcReleaseDevice(device);
     return Error{"ray mesh: Embree could not build the scene (" + why + ")"};
   }
-  return std::unique_ptr<RayMesh>(new EmbreeMesh(device, scene));
+  return std::unique_ptr<RayMesh>(new EmbreeMesh(device, scene, positions, triangles));
 }
 
 }  // namespace tissue::truth::detail

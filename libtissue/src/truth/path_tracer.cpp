@@ -16,7 +16,6 @@
 #include <glm/glm.hpp>
 
 #include "../optics/random_stream.h"  // the Monte Carlo codes share one generator (header only)
-#include "depth_tree.h"
 #include "interface_math.h"
 #include "tissue/core/vec_math.h"
 #include "tissue/optics/fresnel.h"
@@ -117,7 +116,6 @@ class Transport {
         m_boundaryMm.push_back(depth += material.layers[i].thicknessMm);
       m_deepestBoundaryMm = 1.001 * depth + 1e-9;
     }
-    if (m_layerCount > 1) m_depth = std::make_unique<detail::DepthTree>(mesh.positions, mesh.triangles);
     for (const TruthLight& l : lights) {
       PreparedLight p;
       p.directional = l.type == TruthLightType::Directional;
@@ -235,9 +233,10 @@ class Transport {
     }
     // Search a little beyond the deepest boundary, so that deep points get a ball to reuse.
     const double radius = m_deepestBoundaryMm + kDepthBallMm;
-    const detail::NearestPoint np = m_depth->nearest(p, radius);
-    cache = {p, std::isfinite(np.distanceMm) ? np.distanceMm : radius, std::isfinite(np.distanceMm), true};
-    if (!std::isfinite(np.distanceMm) || np.distanceMm > m_deepestBoundaryMm) return m_layerCount - 1;
+    const std::optional<SurfacePoint> found = m_rays.nearest(arr(p), radius);
+    cache = {p, found ? found->distanceMm : radius, found.has_value(), true};
+    if (!found || found->distanceMm > m_deepestBoundaryMm) return m_layerCount - 1;
+    const SurfacePoint& np = *found;
     if (!m_perTexel) return constantDepthLayer(np.distanceMm);
     const Triangle& t = m_mesh.triangles[np.triangle];
     const double w0 = 1.0 - np.b1 - np.b2;
@@ -370,7 +369,6 @@ class Transport {
   subsurface::LayerStack m_stack;
   std::vector<double> m_boundaryMm;
   double m_deepestBoundaryMm = 0.0;  // mm, slightly beyond the deepest boundary: the search radius
-  std::unique_ptr<detail::DepthTree> m_depth;
   std::vector<PreparedLight> m_lights;
 };
 

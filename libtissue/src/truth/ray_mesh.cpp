@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "depth_tree.h"
 #include "embree_mesh.h"
 #include "tissue/subsurface/triangle_bvh.h"
 
@@ -13,17 +14,21 @@ namespace {
 class BvhMesh final : public RayMesh {
  public:
   BvhMesh(std::span<const Float3> positions, std::span<const Triangle> triangles)
-      : m_bvh(positions, triangles) {}
+      : m_bvh(positions, triangles), m_depth(positions, triangles) {}
   std::optional<MeshHit> intersect(const std::array<double, 3>& o, const std::array<double, 3>& d,
                                    double tMin, double tMax) const override {
     const auto hit = m_bvh.intersect(o, d, tMin, tMax);
     if (!hit) return std::nullopt;
     return MeshHit{hit->t, hit->triangle, hit->b1, hit->b2};
   }
+  std::optional<SurfacePoint> nearest(const std::array<double, 3>& p, double maxDistanceMm) const override {
+    return m_depth.nearest({p[0], p[1], p[2]}, maxDistanceMm);
+  }
   Intersector kind() const override { return Intersector::Bvh; }
 
  private:
   subsurface::TriangleBvh m_bvh;
+  detail::DepthTree m_depth;
 };
 
 }  // namespace

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Nearest-hit ray queries on a triangle mesh behind one small interface, with two back ends:
-/// Embree 3 (Intel's ray-tracing kernels, single precision; built in when CMake finds Debian's
+/// Nearest-hit ray queries and nearest-point queries on a triangle mesh behind one small interface, with two
+/// back ends: Embree 3 (Intel's ray-tracing kernels, single precision; built in when CMake finds Debian's
 /// libembree-dev) and the project's own double-precision BVH (tissue/subsurface/triangle_bvh.h).
 /// Both answer the same query; docs/DECISIONS.md ("The path-traced truth") gives the measured
 /// rates. Positions in mm. Queries are const and safe from many threads at once.
@@ -38,7 +38,15 @@ struct MeshHit {
   double b2 = 0.0;             ///< barycentric weight of the third vertex
 };
 
-/// A mesh that answers nearest-hit queries. Immutable after construction.
+/// The surface point nearest to a query point.
+struct SurfacePoint {
+  double distanceMm = 0.0;     ///< mm
+  std::uint32_t triangle = 0;  ///< index into the triangle array
+  double b1 = 0.0;             ///< barycentric weight of the triangle's second vertex
+  double b2 = 0.0;             ///< barycentric weight of the third vertex
+};
+
+/// A mesh that answers nearest-hit and nearest-point queries. Immutable after construction.
 class RayMesh {
  public:
   virtual ~RayMesh() = default;
@@ -46,6 +54,10 @@ class RayMesh {
   virtual std::optional<MeshHit> intersect(const std::array<double, 3>& origin,
                                            const std::array<double, 3>& dir, double tMin,
                                            double tMax) const = 0;
+  /// The surface point nearest to `point` (mm) within `maxDistanceMm`, or none (the bound prunes
+  /// the search). Embree: rtcPointQuery; the BVH back end: its own hierarchy (Ericson 2005).
+  virtual std::optional<SurfacePoint> nearest(const std::array<double, 3>& point,
+                                              double maxDistanceMm) const = 0;
   /// The back end that answers (never Best).
   virtual Intersector kind() const = 0;
 };
