@@ -20,6 +20,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev   # tests and benchmarks
   xvfb xauth               # X server for VTK views and GLFW windows without a display
   libssl-dev               # SHA-256 of simulated positions (recorded sessions, replay): libtissue/src/scene
+  libembree-dev            # ray-mesh queries of the path-traced truth (libtissue/src/truth/embree_mesh.cpp; optional)
   libx11-dev               # Xlib: the chart adapter opens the display it hands VTK (libtissue/src/inspect)
   clang libclang-rt-dev    # libFuzzer and the sanitizer runtimes: the fuzz targets (tests/fuzz)
   ccache                   # compiler cache: the second and third test trees reuse the first's objects

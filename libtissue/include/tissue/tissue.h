@@ -47,6 +47,12 @@
 #include "tissue/optics/materials.h"
 #include "tissue/subsurface/layer_stack.h"
 
+// The path-traced truth: random-walk Monte Carlo in the layered organ, the references it is tested on.
+#include "tissue/truth/material.h"
+#include "tissue/truth/path_tracer.h"
+#include "tissue/truth/ray_mesh.h"
+#include "tissue/truth/slab_reference.h"
+
 // Rendering: headless GL contexts (EGL, OSMesa), the renderer, its scene and shading methods.
 #include "tissue/context/gl_context.h"
 #include "tissue/context/headless_context.h"

@@ -1,0 +1,199 @@
+// Ray rates of the path-traced truth's two ray-mesh back ends (Embree 3 and the subsurface BVH)
+// on the data liver (data/meshes/liver.obj, 27.6k triangles, mm), single-threaded, and the path
+// tracer's sample rate on that liver with each. Prints median, p99 and worst rates over batches:
+//   tissue_truth_bench [--batches N] [--rays N] [--threads N]
+// The random-walk rays start just inside the surface (a random point of a random triangle, 0.01 mm
+// in) with a random inward direction, as the walk's queries do; camera rays come from a pinhole
+// camera framing the liver. "nearest 1.1" is the layer-depth query: the nearest surface point
+// within 1.1 mm of those origins (0.01 mm deep; rates in M queries/s).
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "tissue/core/statistics.h"
+#include "tissue/core/vec_math.h"
+#include "tissue/mesh/load_mesh.h"
+#include "tissue/truth/path_tracer.h"
+
+namespace {
+
+using namespace tissue;
+using Ray = std::pair<std::array<double, 3>, std::array<double, 3>>;
+
+// A small deterministic generator for the ray set (the bench needs no statistical quality).
+struct Lcg {
+  std::uint64_t s = 0x2545F4914F6CDD1Dull;
+  double next() {
+    s = s * 6364136223846793005ull + 1442695040888963407ull;
+    return double(s >> 11) * 0x1.0p-53;
+  }
+};
+
+std::vector<Ray> walkRays(const SurfaceMesh& mesh, std::size_t count) {
+  Lcg rng;
+  std::vector<Ray> rays;
+  rays.reserve(count);
+  while (rays.size() < count) {
+    const Triangle& t = mesh.triangles[std::size_t(rng.next() * double(mesh.triangles.size()))];
+    const Float3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
+    double u = rng.next(), v = rng.next();
+    if (u + v > 1.0) u = 1.0 - u, v = 1.0 - v;
+    const Float3 p = a + float(u) * (b - a) + float(v) * (c - a);
+    const Float3 n = normalize(cross(b - a, c - a));
+    // A uniform direction, flipped into the inward hemisphere.
+    const double z = 2.0 * rng.next() - 1.0, phi = 6.283185307179586 * rng.next(), r = std::sqrt(1.0 - z * z);
+    std::array<double, 3> d{r * std::cos(phi), r * std::sin(phi), z};
+    const double dn = d[0] * double(n.x) + d[1] * double(n.y) + d[2] * double(n.z);
+    if (dn > 0.0)
+      for (int k = 0; k < 3; ++k)
+        d[std::size_t(k)] -= 2.0 * dn * double((&n.x)[k]);
+    const Float3 o = p - 0.01f * n;
+    rays.push_back({{o.x, o.y, o.z}, d});
+  }
+  return rays;
+}
+
+std::vector<Ray> cameraRays(const truth::TruthCamera& camera, int width, int height) {
+  std::vector<Ray> rays;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const Float3 d = truth::pinholeRayDirection(camera, width, height, x + 0.5, y + 0.5);
+      rays.push_back({{camera.eye.x, camera.eye.y, camera.eye.z}, {d.x, d.y, d.z}});
+    }
+  return rays;
+}
+
+// Rays per second of each batch over the whole set.
+std::vector<double> rayRates(const truth::RayMesh& mesh, const std::vector<Ray>& rays, int batches,
+                             int& hits) {
+  std::vector<double> rates;
+  for (int b = 0; b < batches; ++b) {
+    hits = 0;
+    const auto start = std::chrono::steady_clock::now();
+    for (const Ray& r : rays)
+      hits += mesh.intersect(r.first, r.second, 0.0, 1e30).has_value() ? 1 : 0;
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    rates.push_back(double(rays.size()) / s);
+  }
+  return rates;
+}
+
+// Nearest-point queries per second (the layer depth), within `radiusMm` of each walk ray's origin.
+std::vector<double> pointRates(const truth::RayMesh& mesh, const std::vector<Ray>& rays, int batches,
+                               double radiusMm, int& found) {
+  std::vector<double> rates;
+  for (int b = 0; b < batches; ++b) {
+    found = 0;
+    const auto start = std::chrono::steady_clock::now();
+    for (const Ray& r : rays)
+      found += mesh.nearest(r.first, radiusMm).has_value() ? 1 : 0;
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    rates.push_back(double(rays.size()) / s);
+  }
+  return rates;
+}
+
+void printRates(const char* what, const char* backend, const std::vector<double>& rates, int hits,
+                std::size_t rays) {
+  // The p99 and worst of a rate are its low tail: the 1st percentile and the minimum.
+  const SampleSummary s = summarizeSamples(rates);
+  const double worst = *std::min_element(rates.begin(), rates.end());
+  std::printf(
+      "%-12s %-7s median %6.2f Mrays/s   p99 (slow tail) %6.2f   worst %6.2f   best %6.2f   hits %d/%zu\n",
+      what, backend, s.median * 1e-6, quantile(rates, 0.01) * 1e-6, worst * 1e-6, s.max * 1e-6, hits, rays);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int batches = 30, threads = 1;
+  std::size_t rayCount = 200000;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--batches")) batches = std::atoi(argv[i + 1]);
+    if (!std::strcmp(argv[i], "--rays")) rayCount = std::size_t(std::atol(argv[i + 1]));
+    if (!std::strcmp(argv[i], "--threads")) threads = std::atoi(argv[i + 1]);
+  }
+  const std::string path = std::string(TISSUE_BENCH_DATA_DIR) + "/meshes/liver.obj";
+  auto mesh = mesh::loadMesh(path);
+  if (!mesh) {
+    std::printf("%s\n", mesh.error().message.c_str());
+    return 1;
+  }
+  std::printf("liver: %zu vertices, %zu triangles; %zu rays per batch, %d batches, 1 thread\n",
+              mesh->positions.size(), mesh->triangles.size(), rayCount, batches);
+  const Bounds3 box = boundsOf(mesh->positions);
+  truth::TruthCamera camera;
+  camera.target = box.centre();
+  camera.eye = box.centre() + Float3{-60.0f, -80.0f, 250.0f};
+  camera.verticalFovDeg = 40.0f;
+  const std::vector<Ray> walk = walkRays(*mesh, rayCount);
+  const std::vector<Ray> cam = cameraRays(camera, 400, 300);
+  for (truth::Intersector kind : {truth::Intersector::Embree, truth::Intersector::Bvh}) {
+    const auto start = std::chrono::steady_clock::now();
+    auto rays = truth::makeRayMesh(mesh->positions, mesh->triangles, kind);
+    if (!rays) {
+      std::printf("%s: %s\n", truth::intersectorName(kind), rays.error().message.c_str());
+      continue;
+    }
+    const double buildMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::printf("%s: build %.1f ms\n", truth::intersectorName(kind), buildMs);
+    int hits = 0;
+    const std::vector<double> walkRates = rayRates(**rays, walk, batches, hits);
+    printRates("walk rays", truth::intersectorName(kind), walkRates, hits, walk.size());
+    const std::vector<double> cameraRates = rayRates(**rays, cam, batches, hits);
+    printRates("camera rays", truth::intersectorName(kind), cameraRates, hits, cam.size());
+    const std::vector<double> nearestRates = pointRates(**rays, walk, batches, 1.1, hits);
+    printRates("nearest 1.1", truth::intersectorName(kind), nearestRates, hits, walk.size());
+  }
+  // The path tracer on the liver: a capsule over parenchyma-like tissue (subsurface texture
+  // mapping's Table 1 "organs" row), a point and a directional light.
+  truth::TruthMaterial material;
+  truth::TruthLayer capsule, organ;
+  capsule.sigmaA = truth::Rgb{0.6, 0.6, 0.6};
+  capsule.sigmaS = truth::Rgb{2.0, 1.0, 1.0};
+  capsule.g = {0.25, 0.25, 0.25};
+  capsule.thicknessMm = 0.1;
+  organ.sigmaA = truth::Rgb{0.5, 0.5, 0.5};
+  organ.sigmaS = truth::Rgb{1.0, 1.0, 2.0};
+  organ.g = {0.8, 0.8, 0.8};
+  material.layers = {capsule, organ};
+  truth::TruthLight lights[2];
+  lights[1].type = truth::TruthLightType::Directional;
+  const truth::TruthMesh truthMesh{mesh->positions, mesh->triangles, {}};
+  for (truth::Intersector kind : {truth::Intersector::Embree, truth::Intersector::Bvh}) {
+    if (kind == truth::Intersector::Embree && !truth::embreeAvailable()) continue;
+    truth::PathTraceSettings s;
+    s.width = 80;
+    s.height = 60;
+    s.samplesPerPass = 2;
+    s.passes = 2;
+    s.threads = threads;
+    s.intersector = kind;
+    s.surfaceRoughness = 0.17;
+    auto image = truth::renderPathTraced(truthMesh, material, lights, camera, s);
+    if (!image) {
+      std::printf("%s\n", image.error().message.c_str());
+      return 1;
+    }
+    std::int64_t covered = 0;
+    for (std::uint8_t c : image->covered)
+      covered += c;
+    const double pixelSamples = double(image->width * image->height) * image->samplesPerPixel;
+    std::printf(
+        "path tracer  %-7s %dx%d, %d spp, %d thread(s): %.2f s, %.0f pixel samples/s (%.0f on the organ), "
+        "%.0f paths/s, %.1f collisions per path, capped %lld, lost %lld\n",
+        truth::intersectorName(kind), image->width, image->height, image->samplesPerPixel, image->threads,
+        image->seconds, pixelSamples / image->seconds,
+        double(covered) * image->samplesPerPixel / image->seconds, double(image->paths) / image->seconds,
+        double(image->interactions) / double(covered * image->samplesPerPixel * truth::kBands),
+        static_cast<long long>(image->cappedPaths), static_cast<long long>(image->lostPaths));
+  }
+  return 0;
+}
