@@ -239,4 +239,11 @@ long OrganLoop::frame() const {
   return m_impl->run->simulator().frame();
 }
 
+void LoopPhaseSamples::add(const LoopFrame& f) {
+  const double values[] = {f.ms.simulateMs,   f.mesh.gatherMs, f.mesh.normalsMs, f.mesh.planesMs,
+                           f.mesh.tangentsMs, f.ms.uploadMs,   f.ms.renderMs,    f.ms.totalMs};
+  for (std::size_t i = 0; i < phases.size(); ++i)
+    phases[i].second.push_back(values[i]);
+}
+
 }  // namespace tissue::scene

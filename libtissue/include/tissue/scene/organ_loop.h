@@ -17,6 +17,9 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "tissue/core/image.h"
 #include "tissue/core/result.h"
@@ -51,6 +54,22 @@ struct LoopFrame {
   scenario::FrameMetrics simulation;  ///< force on the tool (N), contacts, divergence, ...
   mesh::SurfaceUpdateStats mesh;      ///< per mesh phase ms and the planes re-fitted
   LoopPhases ms;
+};
+
+/// Per-frame cost of each phase over a run (ms), in the order the loop runs them: what a loop
+/// report summarises (median, p99, max per phase; tissue/core/statistics.h).
+struct LoopPhaseSamples {
+  std::vector<std::pair<std::string, std::vector<double>>> phases{
+      {"1 simulate (springs, contact, grasp)", {}},
+      {"2 mesh: positions in", {}},
+      {"2 mesh: normals", {}},
+      {"2 mesh: planes (incremental)", {}},
+      {"2 mesh: tangent frames", {}},
+      {"3 upload", {}},
+      {"4 render (lit, read back)", {}},
+      {"frame total", {}}};
+  /// Appends one frame's figures.
+  void add(const LoopFrame& frame);
 };
 
 /// Where phase 4 draws. Offscreen: into `image` (renderImage, read back); host: into the
