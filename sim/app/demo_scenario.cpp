@@ -189,15 +189,10 @@ void renderSnapshot(DemoSetup& d, std::span<const Float3> positions, const std::
     report["render_skipped"] = ok.error().message;
 }
 
-/// What the frame loop keeps: per-frame metrics, phase costs, the images written every
-/// `imageEvery` frames, and two snapshots to render in every method.
+/// What the frame loop keeps: the library's record, and the images written every `imageEvery` frames.
 struct LoopResult {
-  std::vector<scenario::FrameMetrics> frames;
-  scene::LoopPhaseSamples phases;
-  double refittedFraction = 0.0;
-  std::vector<std::string> sequence;                    ///< frames/frame_NNNN.png, in order
-  std::vector<Float3> pokedPositions, liftedPositions;  ///< at the deepest push, the strongest pull
-  long pokedFrame = -1, liftedFrame = -1;
+  scene::LoopRecord record;
+  std::vector<std::string> sequence;  ///< frames/frame_NNNN.png, in order
 };
 
 /// The trainee's loop, headless: every frame simulates, updates the mesh, uploads and renders
@@ -209,51 +204,35 @@ Result<LoopResult> runFrames(DemoSetup& d, const DemoOptions& o) {
   const int frames = o.frames > 0 ? o.frames : d.organLoop().run().scenario().frames;
   std::optional<scene::SessionRecorder> recorder;
   if (!o.recordSession.empty()) recorder.emplace(d.organLoop());
-  double strongestPush = 0.0, strongestPull = 0.0;
   for (int frame = 0; frame < frames; ++frame) {
     auto f = d.loop->advance(0, {}, target, o.loopWidth, o.loopHeight);
     if (!f) return f.error();
-    r.phases.add(*f);
+    r.record.add(*f, d.organLoop());  // and the snapshots: the hardest push and the hardest pull
     if (recorder) recorder->recordFrame(d.organLoop());
-    const auto positions = d.organLoop().geometricPositions();
-    r.refittedFraction += double(f->mesh.refit.refittedPlanes) / double(positions.size()) / frames;
     if (target && (frame + 1) % o.imageEvery == 0) {
       char name[32];
       std::snprintf(name, sizeof name, "frame_%04d.png", frame + 1);
       if (auto w = writePng(o.outDir / "frames" / name, image); !w) return w.error();
       r.sequence.push_back(std::string("frames/") + name);
     }
-    // Snapshots for the method renders: the hardest push (no grasp) and the hardest pull.
-    const auto& m = f->simulation;
-    const double up = m.forceN.z;
-    if (m.grasped == 0 && up > strongestPush)
-      strongestPush = up, r.pokedPositions.assign(positions.begin(), positions.end()), r.pokedFrame = frame;
-    if (m.grasped > 0 && -up > strongestPull)
-      strongestPull = -up, r.liftedPositions.assign(positions.begin(), positions.end()),
-      r.liftedFrame = frame;
-    r.frames.push_back(m);
   }
   if (recorder)
     if (auto w = scene::saveSession(recorder->session(), o.recordSession); !w) return w.error();
   return r;
 }
 
-nlohmann::json instrumentReport(const LoopResult& r) {
+nlohmann::json instrumentReport(const scene::LoopRecord& r) {
   const auto s = scenario::summarize(r.frames);
   nlohmann::json forces = nlohmann::json::array();
-  double push = 0.0, pull = 0.0;  // N along +z (the tool pushed up) without a grasp; -z while grasping
-  for (const auto& f : r.frames) {
+  for (const auto& f : r.frames)
     forces.push_back({f.forceN.x, f.forceN.y, f.forceN.z});
-    if (f.grasped == 0) push = std::max(push, f.forceN.z);
-    if (f.grasped > 0) pull = std::max(pull, -f.forceN.z);
-  }
   return {{"frames", s.frames},
           {"nan_frames", s.nanFrames},
           {"divergence_events", s.divergenceEvents},
           {"max_contact_force_N", s.maxForceN},
           {"mean_contact_force_N", s.meanForceN},
-          {"max_push_N", push},
-          {"max_pull_N", pull},
+          {"max_push_N", r.maxPushN},
+          {"max_pull_N", r.maxPullN},
           {"poked_frame", r.pokedFrame},
           {"lifted_frame", r.liftedFrame},
           {"ms_per_frame",
@@ -276,7 +255,7 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
   // The frame loop: simulate, mesh update, upload, render, every frame (named, timed phases).
   auto loop = runFrames(d, o);
   if (!loop) return loop.error();
-  const LoopResult& r = *loop;
+  const scene::LoopRecord& r = loop->record;
   const scene::OrganLoop& organLoop = d.organLoop();
   // Check: the loop's incremental planes against a full re-fit of the final shape.
   d.surface->update(organLoop.geometricPositions());
@@ -284,8 +263,8 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
   const auto deviation = mesh::comparePlanes(organLoop.surface().planes(), d.surface->planes());
   if (auto w = writeTextFileAtomic(o.outDir / "frames.csv", scenario::framesCsv(r.frames)); !w)
     return w.error();
-  if (!r.sequence.empty())
-    report["sequence"] = writeMontage(o.outDir, r.sequence, "frame_sequence.png", 5, 2);
+  if (!loop->sequence.empty())
+    report["sequence"] = writeMontage(o.outDir, loop->sequence, "frame_sequence.png", 5, 2);
 
   // Snapshots: rest, the deepest poke, the strongest lift, rendered at full quality; then the
   // poked organ (its shape after the last snapshot) in the four subsurface methods, the one
@@ -350,7 +329,7 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
   report["loop_image_size"] = {o.loopWidth, o.loopHeight};
   report["instrument"] = instrumentReport(r);
   report["phases_ms"] = phaseReport(r.phases);
-  report["refit"] = {{"mean_refitted_fraction", r.refittedFraction},
+  report["refit"] = {{"mean_refitted_fraction", r.meanRefittedFraction()},
                      {"tolerance_rad", organLoop.surface().planeRefit().maxNormalErrorRad},
                      {"max_normal_deviation_rad", deviation.maxAngleRad},
                      {"max_offset_deviation_mm", deviation.maxOffsetMm}};

@@ -246,4 +246,22 @@ void LoopPhaseSamples::add(const LoopFrame& f) {
     phases[i].second.push_back(values[i]);
 }
 
+void LoopRecord::add(const LoopFrame& f, const OrganLoop& loop) {
+  const auto positions = loop.geometricPositions();
+  const scenario::FrameMetrics& m = f.simulation;
+  const long index = long(frames.size());
+  phases.add(f);
+  frames.push_back(m);
+  refittedFraction +=
+      double(f.mesh.refit.refittedPlanes) / double(std::max<std::size_t>(1, positions.size()));
+  if (m.grasped == 0 && m.forceN.z > maxPushN) {
+    maxPushN = m.forceN.z, pokedFrame = index;
+    pokedPositions.assign(positions.begin(), positions.end());
+  }
+  if (m.grasped > 0 && -m.forceN.z > maxPullN) {
+    maxPullN = -m.forceN.z, liftedFrame = index;
+    liftedPositions.assign(positions.begin(), positions.end());
+  }
+}
+
 }  // namespace tissue::scene

@@ -44,16 +44,13 @@ Result<nlohmann::json> replay(const ReplayOptions& o) {
   if (auto match = scene::checkSessionMatches(*session, loop); !match) return match.error();
 
   // The frames, each one pass through the library's loop with the recorded input.
-  scene::LoopPhaseSamples phases;
-  std::vector<scenario::FrameMetrics> metrics;
-  metrics.reserve(session->frames.size());
+  scene::LoopRecord record;
   Image8 image;
   for (std::size_t i = 0; i < session->frames.size(); ++i) {
     auto f =
         scene->advance(0, scene::sessionInput(*session, i), o.render ? &image : nullptr, o.width, o.height);
     if (!f) return Error{session->file.string() + ": frame " + std::to_string(i) + ": " + f.error().message};
-    phases.add(*f);
-    metrics.push_back(f->simulation);
+    record.add(*f, loop);
     if (o.render && !o.outDir.empty() && (i + 1) % std::size_t(o.imageEvery) == 0) {
       char name[32];
       std::snprintf(name, sizeof name, "frame_%04zu.png", i + 1);
@@ -62,8 +59,8 @@ Result<nlohmann::json> replay(const ReplayOptions& o) {
   }
 
   // Report: the fingerprint, the frame times and every phase.
-  const auto summary = scenario::summarize(metrics);
-  const auto& total = phases.phases.back().second;
+  const auto summary = scenario::summarize(record.frames);
+  const auto& total = record.phases.phases.back().second;
   const auto frameMs = summarizeSamples(total);
   nlohmann::json j{
       {"session", session->file.string()},
@@ -73,12 +70,12 @@ Result<nlohmann::json> replay(const ReplayOptions& o) {
       {"positions_sha256", scene::positionsSha256(loop.geometricPositions())},
       {"frame_ms",
        {{"median", rounded(frameMs.median)}, {"p99", rounded(frameMs.p99)}, {"max", rounded(frameMs.max)}}},
-      {"phases_ms", phaseReport(phases)},
+      {"phases_ms", phaseReport(record.phases)},
       {"max_contact_force_N", rounded(summary.maxForceN)},
       {"divergence_events", summary.divergenceEvents},
       {"nan_frames", summary.nanFrames}};
   if (!o.outDir.empty()) {
-    if (auto w = writeTextFileAtomic(o.outDir / "frames.csv", scenario::framesCsv(metrics)); !w)
+    if (auto w = writeTextFileAtomic(o.outDir / "frames.csv", scenario::framesCsv(record.frames)); !w)
       return w.error();
     if (auto w = writeTextFileAtomic(o.outDir / "report.json", j.dump(2) + "\n"); !w) return w.error();
     j["out"] = o.outDir.string();

@@ -149,4 +149,23 @@ class OrganLoop {
   std::unique_ptr<Impl> m_impl;
 };
 
+/// What a run of the loop keeps for its report (a host's session summary; tissue-sim's demo and
+/// replay): every frame's metrics and phase costs, the planes re-fitted, and the shapes at the
+/// hardest push without a grasp and the hardest pull while grasping (the force along z, N).
+struct LoopRecord {
+  std::vector<scenario::FrameMetrics> frames;
+  LoopPhaseSamples phases;
+  double refittedFraction = 0.0;           ///< planes re-fitted per frame, as a fraction of all (summed)
+  double maxPushN = 0.0;                   ///< N, the largest +z force on the tool without a grasp
+  double maxPullN = 0.0;                   ///< N, the largest -z force while grasping
+  long pokedFrame = -1, liftedFrame = -1;  ///< frames of those two (-1: none)
+  std::vector<Float3> pokedPositions, liftedPositions;  ///< mm, the geometric vertices then
+  /// Appends the frame `loop` just ran (`frame`, its result).
+  void add(const LoopFrame& frame, const OrganLoop& loop);
+  /// The mean fraction of planes re-fitted per frame.
+  double meanRefittedFraction() const {
+    return frames.empty() ? 0.0 : refittedFraction / double(frames.size());
+  }
+};
+
 }  // namespace tissue::scene
