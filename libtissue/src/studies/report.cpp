@@ -24,17 +24,6 @@ std::string csvCell(const std::string& cell) {
   return quoted + "\"";
 }
 
-/// `digits` decimals (fixed) or significant digits (general); "-" for NaN.
-std::string printed(bool fixed, int digits, double value) {
-  if (std::isnan(value)) return "-";
-  char buffer[64];
-  if (fixed)
-    std::snprintf(buffer, sizeof buffer, "%.*f", digits, value);
-  else
-    std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
-  return buffer;
-}
-
 }  // namespace
 
 std::string markdownTable(const Table& table) {
@@ -71,10 +60,17 @@ std::string csvTable(const Table& table) {
 }
 
 std::string fixed(double value, int digits) {
-  return printed(true, digits, value);
+  if (std::isnan(value)) return "-";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", digits, value);
+  return buffer;
 }
+
 std::string general(double value, int digits) {
-  return printed(false, digits, value);
+  if (std::isnan(value)) return "-";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
+  return buffer;
 }
 
 Result<void> writeReport(const std::filesystem::path& dir, const Report& report) {
