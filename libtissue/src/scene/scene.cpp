@@ -78,7 +78,6 @@ struct Scene::Impl {
   render::Scene scene;  ///< lights, background, exposure; objects rebuilt per render
   std::optional<render::Camera> fixedCamera;
   bool lightsFollowFraming = true;
-  bool shadows = false;  ///< the key light's
   render::Camera lastCamera;
 
   std::optional<InstrumentPose> lastPose;  ///< world space, for interpolation across frames of one step
@@ -111,7 +110,6 @@ struct Scene::Impl {
     } else if (!b.empty()) {
       lastCamera = render::frameBoundingBox(b.lo, b.hi, aspect);
     }
-    if (!scene.lights.empty()) scene.lights[0].castsShadows = shadows;
     if (lightsFollowFraming && !b.empty() && !scene.lights.empty()) {
       // The main job's key light: above, right and in front of the field (a surgical lamp).
       const Float3 c = b.centre();
@@ -301,7 +299,7 @@ const render::Camera& Scene::camera() const {
   return m_impl->lastCamera;
 }
 void Scene::setShadows(bool shadows) {
-  m_impl->shadows = shadows;
+  if (!m_impl->scene.lights.empty()) m_impl->scene.lights[0].castsShadows = shadows;
 }
 render::Scene& Scene::renderScene() {
   m_impl->lightsFollowFraming = false;

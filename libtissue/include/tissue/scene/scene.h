@@ -137,8 +137,9 @@ class Scene {
   void frameOrgans();
   /// The camera of the last render (framed or fixed).
   const render::Camera& camera() const;
-  /// The key light casts shadows (and gives the separable method its transmission) or not
-  /// (the default).
+  /// The first light casts shadows (and gives the separable method its transmission) or not
+  /// (the default); the same as renderScene().lights[0].castsShadows, with the lights still
+  /// following the framing.
   void setShadows(bool shadows);
   /// Lights, background, exposure (the objects are the scene's). Lights follow the framing
   /// until this is called.
