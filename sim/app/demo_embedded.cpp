@@ -4,7 +4,6 @@
 #include <cmath>
 #include <vector>
 
-#include "gl_environment.h"
 #include "organ_data.h"
 #include "output.h"
 #include "tissue/core/statistics.h"
@@ -16,13 +15,7 @@ namespace tissue::sim_app {
 nlohmann::json renderEmbeddedScene(const std::filesystem::path& outDir, int width, int height) {
   auto fail = [](const std::string& why) { return nlohmann::json{{"skipped", why}}; };
   // The scene on its own headless context, with the apps' settings (env vars read by the app).
-  scene::SceneSettings settings;
-  settings.materials = dataMaterialOptions();
-  settings.sharedMeshesDir = sharedDir() / "meshes";
-  settings.renderer.shaders = shaderSettingsFromEnvironment();
-  settings.context.eglPlatform = eglPlatformFromEnvironment();
-  settings.headless.backend = glContextFromEnvironment();
-  auto made = scene::Scene::create({}, settings);
+  auto made = scene::Scene::create({}, dataSceneSettings());
   if (!made) return fail(made.error().message);
   scene::Scene& s = *made;
   // Organ 1: the liver as its scenario moves it, separable SSS.

@@ -1,60 +1,40 @@
 #pragma once
 /// \file
-/// The demo's rendering: a headless context (EGL, falling back to OSMesa) and the renderer
-/// core, created on first use; the organ is uploaded once and then updated in place, its textures
-/// and every method's settings from the scene module (scene::uploadOrganTextures, organMethod).
+/// The demo's method renders of its poked organ: one static organ of a scene::Scene (4x MSAA),
+/// shaped by Scene::setPositions and switched between the methods at run time (Scene::setMethod;
+/// every method's settings are the scene module's, organMethod with the main job's choices).
 
 #include <filesystem>
-#include <memory>
 #include <nlohmann/json.hpp>
 
-#include "organ_data.h"
-#include "tissue/core/result.h"
 #include "tissue/mesh/deformable_surface.h"
-#include "tissue/scene/organ_assets.h"
-#include "tissue/scene/organ_loop.h"
+#include "tissue/scene/scene.h"
 
 namespace tissue::sim_app {
 
-/// Renders a deformable surface with its textures into PNG files.
-class DemoRenderer {
- public:
-  DemoRenderer(int width, int height);
-  ~DemoRenderer();
-  DemoRenderer(const DemoRenderer&) = delete;
-  DemoRenderer& operator=(const DemoRenderer&) = delete;
+/// Renders organ 0 of `scene` with screen-space separable SSS or, with `textureSpace`, with
+/// texture-space diffusion (d'Eon et al. 2007 with the culled, depth-sized and clipped maps of
+/// Jimenez et al. 2008), lit by a shadow-casting lamp; writes `png` and reports the pass
+/// timings and the image RMS of the subsurface diffuse against the CPU reference (the exact
+/// convolution of the same frame's pre-blur diffuse); {"skipped": why} when it cannot.
+nlohmann::json renderSubsurface(scene::Scene& scene, const std::filesystem::path& png, int width, int height,
+                                bool textureSpace);
 
-  /// Sets up the context, the renderer, the organ's textures and a camera framing `surface`'s
-  /// rest shape, once (later calls only make the context current).
-  Result<void> prepare(const mesh::DeformableSurface& surface, const scene::OrganAssets& organ);
-  /// Attaches `loop` to the renderer (its own mesh, drawn lit like the organ) and returns the
-  /// render request that draws it offscreen into `image` at `width` x `height` pixels.
-  Result<scene::RenderRequest> attachLoop(scene::OrganLoop& loop, const scene::OrganAssets& organ, int width,
-                                          int height, Image8* image);
-  /// Makes the renderer's context current (before a loop frame that renders).
-  Result<void> makeCurrent();
-  /// Renders the surface as it is now and writes `png` atomically.
-  Result<void> render(const mesh::DeformableSurface& surface, const scene::OrganAssets& organ,
-                      const std::filesystem::path& png);
-  /// Renders the surface as it is now with screen-space separable SSS (the material's dipole
-  /// profile, pre-integrated kernel, 17 taps) or, with `textureSpace`, with texture-space
-  /// diffusion (d'Eon et al. 2007 with the culled, depth-sized and clipped maps of Jimenez et al.
-  /// 2008; six Gaussians fitted to the same profile, the organ's own UVs); writes `png` and
-  /// reports the pass timings and the image RMS of the subsurface diffuse against the CPU
-  /// reference (the exact convolution of the same frame); {"skipped": why} when it cannot.
-  nlohmann::json renderSubsurface(const mesh::DeformableSurface& surface, const scene::OrganAssets& organ,
-                                  const std::filesystem::path& png, bool textureSpace);
-  /// Renders the surface as it is now with layered parallax (Oat 2006; Norberg §2.2): the
-  /// organ's base colour and normal map as the outer layer, its opacity map, and the vessel
-  /// network (inner_base.png) 1.5 mm below; writes `png` and reports the pass timings.
-  nlohmann::json renderParallax(const mesh::DeformableSurface& surface, const scene::OrganAssets& organ,
-                                const std::filesystem::path& png);
-  /// GL context and renderer strings, and the last frame's timings (ms).
-  nlohmann::json info() const;
+/// Renders organ 0 with layered parallax (Oat 2006; Norberg §2.2: the vessel network 1.5 mm
+/// under the outer layer's opacity); writes `png` and reports the pass timings.
+nlohmann::json renderParallax(scene::Scene& scene, const std::filesystem::path& png, int width, int height);
 
- private:
-  struct Impl;
-  std::unique_ptr<Impl> m_impl;
-};
+/// Frames organ 0 of `scene` (its shape `surface`) as the ray-march studies do
+/// (studies::rayMarchSceneFor: the whole organ, or with `closeUp` 40 mm around the poke site)
+/// and lights it with their key and back lights, which stay; frameOrgans() frames it again.
+Result<void> frameForRayMarch(scene::Scene& scene, const mesh::DeformableSurface& surface, float aspect,
+                              bool closeUp);
+
+/// Renders organ 0 ray-marched (François et al. 2006, adaptive quality), the whole organ and a
+/// close-up of the poke site of `surface` (its shape), with the ray-march studies' key and back
+/// lights (studies::rayMarchSceneFor), into `outDir`/frame_poked_raymarch{,_closeup}.png. The
+/// scene's lights stay the ray march's. Returns the images' entries, or {"skipped": why}.
+nlohmann::json renderRayMarch(scene::Scene& scene, const mesh::DeformableSurface& surface,
+                              const std::filesystem::path& outDir, int width, int height);
 
 }  // namespace tissue::sim_app

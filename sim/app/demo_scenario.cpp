@@ -9,16 +9,16 @@
 #include <sstream>
 
 #include "demo_render.h"
+#include "gl_environment.h"
 #include "loop_setup.h"
 #include "organ_data.h"
 #include "output.h"
-#include "raymarch_scene.h"
+#include "pass_timings_json.h"
 #include "tissue/core/atomic_file.h"
 #include "tissue/core/statistics.h"
 #include "tissue/core/stopwatch.h"
 #include "tissue/inspect/vtk_export.h"
 #include "tissue/mesh/deformable_surface.h"
-#include "tissue/mesh/load_mesh.h"
 #include "tissue/scenario/scenario_run.h"
 #include "tissue/scene/organ_loop.h"
 #include "tissue/scene/session.h"
@@ -103,39 +103,54 @@ Result<void> writeInspection(const mesh::DeformableSurface& surface, const std::
 }
 #endif
 
-/// The organ to shade, its material, and the scenario that moves it.
+/// The demo's scenes on one headless context: the loop's (the scenario's organ, drawn as a
+/// trainee's frame) and the snapshots' (the same organ static, 4x MSAA, every method).
 struct DemoSetup {
-  std::filesystem::path meshPath;
-  scene::OrganAssets organ;  ///< mesh, material file, textures (scene::loadOrganAssets)
-  mesh::PlaneFitSettings planeSettings;
-  std::optional<mesh::DeformableSurface> surface;  ///< for the snapshots rendered after the loop
-  std::optional<scene::OrganLoop> loop;            ///< the per-frame loop (its own surface)
+  std::unique_ptr<context::GlContext> context;  ///< none: simulation only (render_skipped)
+  std::optional<scene::Scene> loop, snapshots;
+  std::optional<mesh::DeformableSurface> surface;  ///< the snapshots' shape, for the checks
+  const scene::OrganAssets& organ() const { return loop->assets(0); }
+  const scene::OrganLoop& organLoop() const { return *loop->loop(0); }
 };
 
-Result<DemoSetup> setUp(const DemoOptions& o) {
-  const auto scenarioPath = o.scenarioFile.empty() ? dataDir() / "scenarios" / "liver_poke_grasp.json"
-                                                   : std::filesystem::path(o.scenarioFile);
+Result<DemoSetup> setUp(const DemoOptions& o, nlohmann::json& report) {
   if (o.frames < 0) return Error{"--frames must be at least 1 (0: the scenario's)"};
-  auto organ = loadLoopOrgan(scenarioPath, o.meshFile);
-  if (!organ) return organ.error();
-  if (o.frames > 0) organ->scenario.frames = o.frames;
   DemoSetup d;
-  d.meshPath = organ->scenario.mesh;
-  d.organ = std::move(organ->assets);
-  d.planeSettings = d.organ.planes;
-  auto loop = scene::OrganLoop::create(organ->scenario, d.organ.mesh, {.planes = d.planeSettings});
+  if (auto context = createAppContext(offscreenRequest()); context)  // the scenes draw offscreen
+    d.context = std::move(*context);
+  else
+    report["render_skipped"] = context.error().message;  // simulate and update the mesh all the same
+  auto loop = makeLoopScene(d.context.get());
   if (!loop) return loop.error();
   d.loop.emplace(std::move(*loop));
-  auto surface = mesh::DeformableSurface::create(d.organ.mesh, d.planeSettings);
+  const scene::OrganDesc organ{.mesh = o.meshFile,
+                               .scenario = o.scenarioFile.empty()
+                                               ? dataDir() / "scenarios" / "liver_poke_grasp.json"
+                                               : std::filesystem::path(o.scenarioFile)};
+  if (auto added = d.loop->addOrgan(organ); !added) return added.error();
+  const scenario::Scenario& sc = d.organLoop().run().scenario();
+  auto surface = mesh::DeformableSurface::create(d.organ().mesh, d.organ().planes);
   if (!surface) return surface.error();
   d.surface.emplace(std::move(*surface));
+  if (!d.context) return d;
+  scene::SceneSettings settings = dataSceneSettings();
+  settings.renderer.samples = 4;
+  settings.renderer.finishPasses = true;  // each pass timed to its end
+  auto snapshots = scene::Scene::create(d.context->procAddressFunction(), settings);
+  if (!snapshots) return snapshots.error();
+  d.snapshots.emplace(std::move(*snapshots));
+  auto added =
+      d.snapshots->addOrgan({.mesh = o.meshFile.empty() ? sc.mesh : std::filesystem::path(o.meshFile),
+                             .material = d.organ().material.file,
+                             .meshScaleToMm = float(sc.meshScaleToMm)});
+  if (!added) return added.error();
   return d;
 }
 
-/// The four shading methods side by side: the images in `files` (equal sizes) tiled two per row
-/// into `png`. Returns the file name, or why it was skipped.
-nlohmann::json writeMethodsMontage(const std::filesystem::path& dir, const std::vector<std::string>& files,
-                                   const std::string& png) {
+/// The images in `files` (equal sizes) tiled `columns` per row, each shrunk `shrink` times (a
+/// box filter), into `png`. Returns the file name and the panels, or why it was skipped.
+nlohmann::json writeMontage(const std::filesystem::path& dir, const std::vector<std::string>& files,
+                            const std::string& png, int columns, int shrink) {
   std::vector<Image8> images;
   for (const auto& f : files) {
     auto image = readImage(dir / f, 4);
@@ -145,129 +160,79 @@ nlohmann::json writeMethodsMontage(const std::filesystem::path& dir, const std::
     images.push_back(std::move(*image));
   }
   if (images.empty()) return {{"skipped", "no images"}};
-  const int w = images[0].width, h = images[0].height, rows = int(images.size() + 1) / 2;
-  Image8 tiled(2 * w, rows * h, 4);
-  for (std::size_t i = 0; i < images.size(); ++i)
+  const int w = images[0].width / shrink, h = images[0].height / shrink, n = int(images.size());
+  Image8 tiled(std::min(columns, n) * w, (n + columns - 1) / columns * h, 4);
+  for (int i = 0; i < n; ++i)
     for (int y = 0; y < h; ++y)
-      std::copy_n(images[i].at(0, y), std::size_t(w) * 4, tiled.at(int(i % 2) * w, int(i / 2) * h + y));
+      for (int x = 0; x < w; ++x)
+        for (int c = 0; c < 4; ++c) {
+          int sum = 0;
+          for (int dy = 0; dy < shrink; ++dy)
+            for (int dx = 0; dx < shrink; ++dx)
+              sum += images[i].at(shrink * x + dx, shrink * y + dy)[c];
+          tiled.at(i % columns * w + x, i / columns * h + y)[c] =
+              std::uint8_t((sum + shrink * shrink / 2) / (shrink * shrink));
+        }
   if (auto r = writePng(dir / png, tiled); !r) return {{"skipped", r.error().message}};
   return {{"image", png}, {"panels", files}};
 }
 
-/// Renders the surface in the state `positions` (a snapshot) and writes `png`.
-void renderSnapshot(DemoRenderer& renderer, DemoSetup& d, std::span<const Float3> positions,
-                    const std::filesystem::path& png, std::vector<std::string>& images,
-                    nlohmann::json& report) {
+/// The snapshot organ in the state `positions`, lit, into `png`.
+void renderSnapshot(DemoSetup& d, std::span<const Float3> positions, const std::filesystem::path& png,
+                    const DemoOptions& o, std::vector<std::string>& images, nlohmann::json& report) {
   d.surface->update(positions);
-  if (auto img = renderer.render(*d.surface, d.organ, png); img.ok())
+  auto ok = d.snapshots->setPositions(0, positions);
+  if (ok) ok = d.snapshots->renderPng(png, o.width, o.height);
+  if (ok)
     images.push_back(png.filename().string());
   else
-    report["render_skipped"] = img.error().message;
+    report["render_skipped"] = ok.error().message;
 }
 
-/// What the frame loop keeps: per-frame metrics, phase costs, the images written every
-/// `imageEvery` frames, and two snapshots to render in every method.
+/// What the frame loop keeps: the library's record, and the images written every `imageEvery` frames.
 struct LoopResult {
-  std::vector<scenario::FrameMetrics> frames;
-  PhaseSamples phases;
-  double refittedFraction = 0.0;
-  std::vector<std::string> sequence;                    ///< frames/frame_NNNN.png, in order
-  std::vector<Float3> pokedPositions, liftedPositions;  ///< at the deepest push, the strongest pull
-  long pokedFrame = -1, liftedFrame = -1;
+  scene::LoopRecord record;
+  std::vector<std::string> sequence;  ///< frames/frame_NNNN.png, in order
 };
 
 /// The trainee's loop, headless: every frame simulates, updates the mesh, uploads and renders
-/// (scene::OrganLoop); every `imageEvery` frames the rendered image is written.
-Result<LoopResult> runFrames(DemoSetup& d, DemoRenderer& renderer, const DemoOptions& o,
-                             nlohmann::json& report) {
-  const int loopWidth = o.loopWidth, loopHeight = o.loopHeight, imageEvery = o.imageEvery;
-  const std::filesystem::path& outDir = o.outDir;
+/// (Scene::advance, the library's loop); every `imageEvery` frames the rendered image is written.
+Result<LoopResult> runFrames(DemoSetup& d, const DemoOptions& o) {
   LoopResult r;
   Image8 image;
-  std::optional<scene::RenderRequest> request;
-  if (auto attached = renderer.attachLoop(*d.loop, d.organ, loopWidth, loopHeight, &image); attached.ok())
-    request = *attached;
-  else
-    report["render_skipped"] = attached.error().message;  // simulate and update the mesh all the same
-  const int frames = d.loop->run().scenario().frames;
+  Image8* target = d.context ? &image : nullptr;
+  const int frames = o.frames > 0 ? o.frames : d.organLoop().run().scenario().frames;
   std::optional<scene::SessionRecorder> recorder;
-  if (!o.recordSession.empty()) recorder.emplace(*d.loop);
-  double strongestPush = 0.0, strongestPull = 0.0;
+  if (!o.recordSession.empty()) recorder.emplace(d.organLoop());
   for (int frame = 0; frame < frames; ++frame) {
-    if (request)
-      if (auto ok = renderer.makeCurrent(); !ok) return ok.error();
-    auto f = d.loop->advance({}, request ? &*request : nullptr);
+    auto f = d.loop->advance(0, {}, target, o.loopWidth, o.loopHeight);
     if (!f) return f.error();
-    r.phases.add(*f);
-    if (recorder) recorder->recordFrame(*d.loop);
-    const auto positions = d.loop->geometricPositions();
-    r.refittedFraction += double(f->mesh.refit.refittedPlanes) / double(positions.size()) / frames;
-    if (request && (frame + 1) % imageEvery == 0) {
+    r.record.add(*f, d.organLoop());  // and the snapshots: the hardest push and the hardest pull
+    if (recorder) recorder->recordFrame(d.organLoop());
+    if (target && (frame + 1) % o.imageEvery == 0) {
       char name[32];
       std::snprintf(name, sizeof name, "frame_%04d.png", frame + 1);
-      if (auto w = writePng(outDir / "frames" / name, image); !w) return w.error();
+      if (auto w = writePng(o.outDir / "frames" / name, image); !w) return w.error();
       r.sequence.push_back(std::string("frames/") + name);
     }
-    // Snapshots for the method renders: the hardest push (no grasp) and the hardest pull.
-    const auto& m = f->simulation;
-    const double up = m.forceN.z;
-    if (m.grasped == 0 && up > strongestPush)
-      strongestPush = up, r.pokedPositions.assign(positions.begin(), positions.end()), r.pokedFrame = frame;
-    if (m.grasped > 0 && -up > strongestPull)
-      strongestPull = -up, r.liftedPositions.assign(positions.begin(), positions.end()),
-      r.liftedFrame = frame;
-    r.frames.push_back(m);
   }
   if (recorder)
     if (auto w = scene::saveSession(recorder->session(), o.recordSession); !w) return w.error();
   return r;
 }
 
-/// The images of the frame sequence tiled five per row at half size into `png`.
-nlohmann::json writeSequenceMontage(const std::filesystem::path& dir, const std::vector<std::string>& files,
-                                    const std::string& png) {
-  std::vector<Image8> images;
-  for (const auto& f : files) {
-    auto image = readImage(dir / f, 4);
-    if (!image) return {{"skipped", f + ": " + image.error().message}};
-    images.push_back(std::move(*image));
-  }
-  if (images.empty()) return {{"skipped", "no frames rendered"}};
-  const int w = images[0].width / 2, h = images[0].height / 2, columns = 5;
-  const int rows = (int(images.size()) + columns - 1) / columns;
-  Image8 tiled(std::min<int>(columns, int(images.size())) * w, rows * h, 4);
-  for (std::size_t i = 0; i < images.size(); ++i)
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x)
-        for (int c = 0; c < 4; ++c) {
-          // 2x2 box filter.
-          int sum = 0;
-          for (int dy = 0; dy < 2; ++dy)
-            for (int dx = 0; dx < 2; ++dx)
-              sum += images[i].at(2 * x + dx, 2 * y + dy)[c];
-          tiled.at(int(i % columns) * w + x, int(i / columns) * h + y)[c] =
-              static_cast<std::uint8_t>((sum + 2) / 4);
-        }
-  if (auto r = writePng(dir / png, tiled); !r) return {{"skipped", r.error().message}};
-  return {{"image", png}, {"frames", files}};
-}
-
-nlohmann::json instrumentReport(const LoopResult& r) {
+nlohmann::json instrumentReport(const scene::LoopRecord& r) {
   const auto s = scenario::summarize(r.frames);
   nlohmann::json forces = nlohmann::json::array();
-  double push = 0.0, pull = 0.0;  // N along +z (the tool pushed up) without a grasp; -z while grasping
-  for (const auto& f : r.frames) {
+  for (const auto& f : r.frames)
     forces.push_back({f.forceN.x, f.forceN.y, f.forceN.z});
-    if (f.grasped == 0) push = std::max(push, f.forceN.z);
-    if (f.grasped > 0) pull = std::max(pull, -f.forceN.z);
-  }
   return {{"frames", s.frames},
           {"nan_frames", s.nanFrames},
           {"divergence_events", s.divergenceEvents},
           {"max_contact_force_N", s.maxForceN},
           {"mean_contact_force_N", s.meanForceN},
-          {"max_push_N", push},
-          {"max_pull_N", pull},
+          {"max_push_N", r.maxPushN},
+          {"max_pull_N", r.maxPullN},
           {"poked_frame", r.pokedFrame},
           {"lifted_frame", r.liftedFrame},
           {"ms_per_frame",
@@ -278,55 +243,66 @@ nlohmann::json instrumentReport(const LoopResult& r) {
 }  // namespace
 
 Result<nlohmann::json> runDemo(const DemoOptions& o) {
-  // Setup: the organ, its material, the loop that moves and draws it, and the snapshots' surface.
-  auto setup = setUp(o);
+  // Setup: the organ, its material, the scenes that move and draw it, and the snapshots' surface.
+  nlohmann::json report;
+  auto setup = setUp(o, report);
   if (!setup) return setup.error();
   DemoSetup& d = *setup;
-  DemoRenderer renderer(o.width, o.height);
-  nlohmann::json report;
   std::vector<std::string> images;
   const auto rest = d.surface->geometricRestPositions();
   const std::vector<Float3> restPositions(rest.begin(), rest.end());
 
   // The frame loop: simulate, mesh update, upload, render, every frame (named, timed phases).
-  auto loop = runFrames(d, renderer, o, report);
+  auto loop = runFrames(d, o);
   if (!loop) return loop.error();
-  const LoopResult& r = *loop;
+  const scene::LoopRecord& r = loop->record;
+  const scene::OrganLoop& organLoop = d.organLoop();
   // Check: the loop's incremental planes against a full re-fit of the final shape.
-  d.surface->update(d.loop->geometricPositions());
+  d.surface->update(organLoop.geometricPositions());
   d.surface->refitAllPlanes();
-  const auto deviation = mesh::comparePlanes(d.loop->surface().planes(), d.surface->planes());
+  const auto deviation = mesh::comparePlanes(organLoop.surface().planes(), d.surface->planes());
   if (auto w = writeTextFileAtomic(o.outDir / "frames.csv", scenario::framesCsv(r.frames)); !w)
     return w.error();
-  report["sequence"] = writeSequenceMontage(o.outDir, r.sequence, "frame_sequence.png");
+  if (!loop->sequence.empty())
+    report["sequence"] = writeMontage(o.outDir, loop->sequence, "frame_sequence.png", 5, 2);
 
-  // Snapshots: rest, the deepest poke, the strongest lift, rendered at full quality.
-  const std::vector<Float3>& poked = r.pokedPositions.empty() ? restPositions : r.pokedPositions;
-  renderSnapshot(renderer, d, restPositions, o.outDir / "frame_rest.png", images, report);
-  if (!r.liftedPositions.empty())
-    renderSnapshot(renderer, d, r.liftedPositions, o.outDir / "frame_lifted.png", images, report);
-  renderSnapshot(renderer, d, poked, o.outDir / "frame_poked.png", images, report);
-  if (!report.contains("render_skipped")) {
-    report["render"] = renderer.info();
-    report["render"]["images"] = images;
+  // Snapshots: rest, the deepest poke, the strongest lift, rendered at full quality; then the
+  // poked organ (its shape after the last snapshot) in the four subsurface methods, the one
+  // object switched between them at run time, and side by side.
+  if (d.snapshots) {
+    const std::vector<Float3>& poked = r.pokedPositions.empty() ? restPositions : r.pokedPositions;
+    renderSnapshot(d, restPositions, o.outDir / "frame_rest.png", o, images, report);
+    if (!r.liftedPositions.empty())
+      renderSnapshot(d, r.liftedPositions, o.outDir / "frame_lifted.png", o, images, report);
+    renderSnapshot(d, poked, o.outDir / "frame_poked.png", o, images, report);
+    if (!report.contains("render_skipped")) {
+      const auto& i = d.context->info();
+      const auto& t = d.snapshots->renderer().lastTimings();
+      report["render"] = {{"gl_context", i.backend},
+                          {"gl_platform", i.platform},
+                          {"gl_vendor", i.vendor},
+                          {"gl_renderer", i.renderer},
+                          {"gl_version", i.version},
+                          {"last_frame_ms", {{"upload_cpu", t.uploadCpuMs}, {"total_cpu", t.totalCpuMs}}},
+                          {"last_frame_passes", passTimingsJson(t)},
+                          {"images", images}};
+    }
+    scene::Scene& s = *d.snapshots;
+    report["render_separable"] =
+        renderSubsurface(s, o.outDir / "frame_poked_separable.png", o.width, o.height, false);
+    report["texture_space"] =
+        renderSubsurface(s, o.outDir / "frame_poked_texture_space.png", o.width, o.height, true);
+    report["parallax"] = renderParallax(s, o.outDir / "frame_poked_parallax.png", o.width, o.height);
+    report["raymarch"] = renderRayMarch(s, *d.surface, o.outDir, o.width, o.height);
+    // The scene a host embeds (scene::Scene on its own context, as the C API and the example
+    // hosts use it): the simulated liver and a turned, scaled static copy, poked by a host.
+    report["embedded_scene"] = renderEmbeddedScene(o.outDir, o.width, o.height);
+    (void)d.context->makeCurrent();  // the demo's scenes are freed with their context current
+    report["methods"] = writeMontage(o.outDir,
+                                     {"frame_poked_separable.png", "frame_poked_texture_space.png",
+                                      "frame_poked_raymarch.png", "frame_poked_parallax.png"},
+                                     "frame_poked_methods.png", 2, 1);
   }
-
-  // The poked organ (the surface is in that state after the last renderFrame) in the four
-  // subsurface methods, one object switched between them at run time (ray marching on its own
-  // renderer, with the planes), then side by side.
-  report["render_separable"] =
-      renderer.renderSubsurface(*d.surface, d.organ, o.outDir / "frame_poked_separable.png", false);
-  report["texture_space"] =
-      renderer.renderSubsurface(*d.surface, d.organ, o.outDir / "frame_poked_texture_space.png", true);
-  report["raymarch"] = renderPokedOrganRayMarch(*d.surface, d.organ, o.outDir, o.width, o.height);
-  report["parallax"] = renderer.renderParallax(*d.surface, d.organ, o.outDir / "frame_poked_parallax.png");
-  // The scene a host embeds (scene::Scene, as the C API and the example hosts use it): the
-  // simulated liver and a turned, scaled static copy in different methods, poked by a host.
-  report["embedded_scene"] = renderEmbeddedScene(o.outDir, o.width, o.height);
-  report["methods"] = writeMethodsMontage(o.outDir,
-                                          {"frame_poked_separable.png", "frame_poked_texture_space.png",
-                                           "frame_poked_raymarch.png", "frame_poked_parallax.png"},
-                                          "frame_poked_methods.png");
 
   // Inspection: the poked organ with its shading fields, for ParaView (a VTK export: a build
   // without VTK, TISSUE_WITH_VTK=OFF, writes none and says so in the report).
@@ -338,22 +314,23 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
   report["inspection_skipped"] = "built without VTK (TISSUE_WITH_VTK=OFF): no organ_poked.vtp";
 #endif
 
-  report["mesh"] = d.meshPath.string();
-  report["scenario"] = d.loop->run().scenario().file.string();
-  report["material"] = d.organ.material.name;
+  const scenario::ScenarioRun& run = organLoop.run();
+  report["mesh"] = run.scenario().mesh.string();
+  report["scenario"] = run.scenario().file.string();
+  report["material"] = d.organ().material.name;
   report["vertices"] = rest.size();
   report["triangles"] = d.surface->triangles().size();
-  report["springs"] = d.loop->run().simulator().system().springs.size();
-  report["simulated_nodes"] = d.loop->run().simulator().state().x.size();
-  report["sigma_t_per_mm"] = d.planeSettings.sigma_t;
-  report["plane_radius_mm"] = d.planeSettings.radiusMm();
+  report["springs"] = run.simulator().system().springs.size();
+  report["simulated_nodes"] = run.simulator().state().x.size();
+  report["sigma_t_per_mm"] = d.organ().planes.sigma_t;
+  report["plane_radius_mm"] = d.organ().planes.radiusMm();
   report["frames"] = r.frames.size();
   report["image_every"] = o.imageEvery;
   report["loop_image_size"] = {o.loopWidth, o.loopHeight};
   report["instrument"] = instrumentReport(r);
   report["phases_ms"] = phaseReport(r.phases);
-  report["refit"] = {{"mean_refitted_fraction", r.refittedFraction},
-                     {"tolerance_rad", d.loop->surface().planeRefit().maxNormalErrorRad},
+  report["refit"] = {{"mean_refitted_fraction", r.meanRefittedFraction()},
+                     {"tolerance_rad", organLoop.surface().planeRefit().maxNormalErrorRad},
                      {"max_normal_deviation_rad", deviation.maxAngleRad},
                      {"max_offset_deviation_mm", deviation.maxOffsetMm}};
   report["out"] = o.outDir.string();

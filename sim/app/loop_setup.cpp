@@ -2,26 +2,24 @@
 
 #include <cmath>
 
+#include "gl_environment.h"
+#include "organ_data.h"
 #include "output.h"
 #include "tissue/core/statistics.h"
 
 namespace tissue::sim_app {
 
-Result<LoopOrgan> loadLoopOrgan(const std::filesystem::path& scenarioFile, const std::string& meshOverride) {
-  auto parsed = scenario::loadScenario(scenarioFile, {.sharedMeshesDir = sharedDir() / "meshes"});
-  if (!parsed) return parsed.error();
-  if (!meshOverride.empty()) parsed->mesh = meshOverride;
-  auto assets = scene::loadOrganAssets(organSourceFor(parsed->mesh, float(parsed->meshScaleToMm)));
-  if (!assets) return assets.error();
-  LoopOrgan organ{.scenario = std::move(*parsed), .assets = std::move(*assets)};
-  return organ;
+Result<scene::Scene> makeLoopScene(const context::GlContext* context) {
+  scene::SceneSettings settings = dataSceneSettings();
+  settings.renderer.samples = 0;  // 4x MSAA of three float targets is llvmpipe's heaviest pass
+  settings.gl = context != nullptr;
+  return scene::Scene::create(context ? context->procAddressFunction() : gl::GetProcAddressFn{}, settings);
 }
 
-void PhaseSamples::add(const scene::LoopFrame& f) {
-  const double values[] = {f.ms.simulateMs,   f.mesh.gatherMs, f.mesh.normalsMs, f.mesh.planesMs,
-                           f.mesh.tangentsMs, f.ms.uploadMs,   f.ms.renderMs,    f.ms.totalMs};
-  for (std::size_t i = 0; i < phases.size(); ++i)
-    phases[i].second.push_back(values[i]);
+context::ContextRequest offscreenRequest() {
+  context::ContextRequest request;
+  request.width = request.height = 16;
+  return request;
 }
 
 double rounded(double x) {
@@ -30,7 +28,7 @@ double rounded(double x) {
   return std::round(x * scale) / scale;
 }
 
-nlohmann::json phaseReport(const PhaseSamples& samples) {
+nlohmann::json phaseReport(const scene::LoopPhaseSamples& samples) {
   nlohmann::json j = nlohmann::json::array();
   for (const auto& [name, values] : samples.phases) {
     const auto s = summarizeSamples(values);

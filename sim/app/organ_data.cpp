@@ -1,6 +1,7 @@
 // The project's data folders for the scene module's organ layer (organ_data.h).
 #include "organ_data.h"
 
+#include "gl_environment.h"
 #include "output.h"
 
 namespace tissue::sim_app {
@@ -19,19 +20,22 @@ Result<scene::MaterialFile> readDataMaterial(const std::filesystem::path& file) 
   return scene::readMaterialFile(file, dataMaterialOptions());
 }
 
-Result<optics::ScatteringMaterial> loadDataMaterial(const std::string& name) {
-  auto material = readDataMaterial(dataDir() / "materials" / (name + ".json"));
-  if (!material) return material.error();
-  return scene::opticalMaterial(*material);
+scene::OrganSource organSourceFor(const std::filesystem::path& meshFile, float scaleToMm) {
+  return {.mesh = meshFile,
+          .material = materialFileFor(meshFile),
+          .meshScaleToMm = scaleToMm,
+          .materialOptions = dataMaterialOptions()};
 }
 
-scene::OrganSource organSourceFor(const std::filesystem::path& meshFile, float scaleToMm) {
-  scene::OrganSource source;
-  source.mesh = meshFile;
-  source.material = materialFileFor(meshFile);
-  source.meshScaleToMm = scaleToMm;
-  source.materialOptions = dataMaterialOptions();
-  return source;
+scene::SceneSettings dataSceneSettings() {
+  scene::SceneSettings settings;
+  settings.materials = dataMaterialOptions();
+  settings.materialsDir = dataDir() / "materials";
+  settings.sharedMeshesDir = sharedDir() / "meshes";
+  settings.renderer.shaders = shaderSettingsFromEnvironment();
+  settings.context.eglPlatform = eglPlatformFromEnvironment();
+  settings.headless.backend = glContextFromEnvironment();
+  return settings;
 }
 
 }  // namespace tissue::sim_app

@@ -154,5 +154,86 @@ TEST(Scene, BadInputNamesTheFileOrTheArgument) {
   EXPECT_FALSE(scene.renderImage(0, 10).ok());
 }
 
+TEST(Scene, AHostShapesAStaticOrganAndTheImageFollows) {
+  // setPositions: the rest shape gives the first image again; a shape pushed 10 mm down at the
+  // top changes it; a wrong count and a simulated organ are errors.
+  Scene scene = makeScene();
+  auto still = scene.addOrgan(liver(false));
+  ASSERT_TRUE(still.ok()) << still.error().message;
+  auto before = scene.renderImage(160, 120);
+  ASSERT_TRUE(before.ok()) << before.error().message;
+  const auto& m = scene.assets(*still).mesh;
+  std::vector<Float3> rest(m.geometricVertexCount ? m.geometricVertexCount : m.positions.size());
+  for (std::size_t i = 0; i < m.positions.size(); ++i)
+    rest[m.geometricIndex.empty() ? i : m.geometricIndex[i]] = m.positions[i];
+  ASSERT_TRUE(scene.setPositions(*still, rest).ok());
+  scene.setCamera(scene.camera());  // the same view for both shapes
+  auto again = scene.renderImage(160, 120);
+  ASSERT_TRUE(again.ok());
+  EXPECT_EQ(again->pixels, before->pixels);
+  std::vector<Float3> pushed = rest;
+  const float top = scene.assets(*still).bounds.hi.z;
+  for (Float3& p : pushed)
+    if (p.z > top - 15.0f) p.z -= 10.0f;
+  ASSERT_TRUE(scene.setPositions(*still, pushed).ok());
+  auto after = scene.renderImage(160, 120);
+  ASSERT_TRUE(after.ok());
+  EXPECT_NE(after->pixels, before->pixels);
+  EXPECT_FALSE(scene.setPositions(*still, std::span(rest).first(3)).ok());
+  auto simulated = scene.addOrgan(liver(true));
+  ASSERT_TRUE(simulated.ok());
+  EXPECT_FALSE(scene.setPositions(*simulated, rest).ok());
+}
+
+TEST(Scene, AdvanceRunsOneFrameWithExactInputWithOrWithoutGl) {
+  // The same frames with and without a renderer move the organ identically; with one, the
+  // frame is rendered (phase 4 timed) into the image.
+  SceneSettings noGl;
+  noGl.gl = false;
+  auto bare = Scene::create({}, noGl);
+  ASSERT_TRUE(bare.ok()) << bare.error().message;
+  ASSERT_TRUE(bare->addOrgan(liver(true)).ok());
+  EXPECT_FALSE(bare->renderImage(16, 16).ok());
+  Scene drawn = makeScene();
+  ASSERT_TRUE(drawn.addOrgan(liver(true)).ok());
+  Image8 image;
+  for (int f = 0; f < 30; ++f) {
+    auto a = bare->advance(0);
+    ASSERT_TRUE(a.ok()) << a.error().message;
+    auto b = drawn.advance(0, {}, &image, 96, 72);
+    ASSERT_TRUE(b.ok()) << b.error().message;
+    EXPECT_GT(b->ms.renderMs, 0.0);
+  }
+  const auto pa = bare->loop(0)->geometricPositions(), pb = drawn.loop(0)->geometricPositions();
+  ASSERT_EQ(pa.size(), pb.size());
+  for (std::size_t i = 0; i < pa.size(); ++i)
+    ASSERT_EQ(pa[i].z, pb[i].z);
+  EXPECT_EQ(image.width, 96);
+  EXPECT_GT(coveredPixels(image), 96u * 72u / 10);
+}
+
+TEST(Scene, AnOrgansOwnMethodChoicesReachItsSettings) {
+  // OrganDesc::methods over SceneSettings::methods: a separable kernel of rank 2 has two
+  // components; the texture-space map size and flags; ray-march samples; "raymarch" parses.
+  Scene scene = makeScene();
+  OrganDesc d = liver(false);
+  d.methods = MethodChoices{.kernel = "svd", .rank = 2, .mapSize = 512, .cull = false, .samples = 7};
+  auto id = scene.addOrgan(d);
+  ASSERT_TRUE(id.ok()) << id.error().message;
+  const OrganAssets& a = scene.assets(*id);
+  auto sep = organMethod(render::ShadingMethod::Separable, a, {}, *d.methods);
+  ASSERT_TRUE(sep.ok()) << sep.error().message;
+  EXPECT_EQ(std::get<render::SeparableSettings>(*sep).components.size(), 2u);
+  auto tsd = organMethod(render::ShadingMethod::TextureSpace, a, {}, *d.methods);
+  ASSERT_TRUE(tsd.ok());
+  EXPECT_EQ(std::get<render::TextureSpaceSettings>(*tsd).mapSize, 512);
+  EXPECT_FALSE(std::get<render::TextureSpaceSettings>(*tsd).cull);
+  EXPECT_TRUE(scene.setMethod(*id, render::ShadingMethod::Separable).ok());
+  EXPECT_TRUE(scene.renderImage(64, 48).ok());
+  EXPECT_EQ(*parseShadingMethod("raymarch"), render::ShadingMethod::RayMarch);
+  auto truth = separableTruth(a);
+  ASSERT_TRUE(truth.ok()) << truth.error().message;
+}
+
 }  // namespace
 }  // namespace tissue::scene

@@ -239,4 +239,29 @@ long OrganLoop::frame() const {
   return m_impl->run->simulator().frame();
 }
 
+void LoopPhaseSamples::add(const LoopFrame& f) {
+  const double values[] = {f.ms.simulateMs,   f.mesh.gatherMs, f.mesh.normalsMs, f.mesh.planesMs,
+                           f.mesh.tangentsMs, f.ms.uploadMs,   f.ms.renderMs,    f.ms.totalMs};
+  for (std::size_t i = 0; i < phases.size(); ++i)
+    phases[i].second.push_back(values[i]);
+}
+
+void LoopRecord::add(const LoopFrame& f, const OrganLoop& loop) {
+  const auto positions = loop.geometricPositions();
+  const scenario::FrameMetrics& m = f.simulation;
+  const long index = long(frames.size());
+  phases.add(f);
+  frames.push_back(m);
+  refittedFraction +=
+      double(f.mesh.refit.refittedPlanes) / double(std::max<std::size_t>(1, positions.size()));
+  if (m.grasped == 0 && m.forceN.z > maxPushN) {
+    maxPushN = m.forceN.z, pokedFrame = index;
+    pokedPositions.assign(positions.begin(), positions.end());
+  }
+  if (m.grasped > 0 && -m.forceN.z > maxPullN) {
+    maxPullN = -m.forceN.z, liftedFrame = index;
+    liftedPositions.assign(positions.begin(), positions.end());
+  }
+}
+
 }  // namespace tissue::scene

@@ -75,6 +75,8 @@ Result<render::MethodSettings> organMethod(render::ShadingMethod method, const O
         return Error{"texture-space diffusion needs unique UVs; load the organ with the UV-atlas fallback"};
       auto tsd = materials::makeTextureSpaceSettings(opticalMaterial(organ.material), choices.gaussians);
       if (!tsd) return Error{materialName(organ) + ": " + tsd.error().message};
+      tsd->mapSize = choices.mapSize;
+      tsd->cull = choices.cull, tsd->clip = choices.clip, tsd->depthSize = choices.depthSize;
       return render::MethodSettings{*tsd};
     }
     case ShadingMethod::RayMarch: {
@@ -102,11 +104,20 @@ Result<render::MethodSettings> organMethod(render::ShadingMethod method, const O
       render::ParallaxSettings parallax;
       parallax.layers = {render::ParallaxLayer{textures.innerBase, choices.parallaxDepthMm, 1.0f}};
       parallax.opacityMap = textures.opacity;
-      parallax.refractiveIndex = organ.material.ior;
+      parallax.refractiveIndex = choices.refractiveIndex.value_or(organ.material.ior);
+      parallax.lightmap = choices.lightmap;
+      parallax.lightmap.cull = choices.cull, parallax.lightmap.clip = choices.clip;
       return render::MethodSettings{parallax};
     }
   }
   return Error{"unknown shading method"};
+}
+
+Result<reference::RadialProfile> separableTruth(const OrganAssets& organ, const MethodChoices& choices) {
+  auto separable = materials::makeSeparableMaterial(opticalMaterial(organ.material), choices.kernel,
+                                                    choices.taps, choices.rank);
+  if (!separable) return Error{materialName(organ) + ": " + separable.error().message};
+  return std::move(separable->truth);
 }
 
 render::SceneObject organObject(render::MeshHandle mesh, const OrganTextures& textures,
@@ -124,6 +135,7 @@ Result<render::ShadingMethod> parseShadingMethod(std::string_view name) {
   for (ShadingMethod m : {ShadingMethod::Lit, ShadingMethod::Separable, ShadingMethod::TextureSpace,
                           ShadingMethod::RayMarch, ShadingMethod::Parallax})
     if (render::shadingMethodName(m) == name) return m;
+  if (name == "raymarch") return ShadingMethod::RayMarch;  // tissue-sim's older spelling
   return Error{"method '" + std::string(name) +
                "': use lit, separable, texture-space, ray-march or parallax"};
 }

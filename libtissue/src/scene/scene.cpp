@@ -34,6 +34,26 @@ sim::Vec3d toVec3d(Float3 v) {
   return {double(v.x), double(v.y), double(v.z)};
 }
 
+/// Where `desc`'s assets come from: its mesh (else `scenarioMesh`), its material (else the
+/// materials folder's file for the mesh, when there is one).
+OrganSource sourceOf(const OrganDesc& desc, const SceneSettings& settings,
+                     const scenario::Scenario* scenario) {
+  OrganSource source{.mesh = desc.mesh,
+                     .material = desc.material,
+                     .meshScaleToMm = desc.meshScaleToMm,
+                     .materialOptions = settings.materials,
+                     .uvAtlasFallback = true};
+  if (scenario) {
+    if (source.mesh.empty()) source.mesh = scenario->mesh;
+    source.meshScaleToMm = float(scenario->meshScaleToMm);
+  }
+  if (source.material.empty() && !settings.materialsDir.empty()) {
+    const auto file = settings.materialsDir / (source.mesh.stem().string() + ".json");
+    if (std::filesystem::is_regular_file(file)) source.material = file;
+  }
+  return source;
+}
+
 }  // namespace
 
 struct Scene::Impl {
@@ -46,6 +66,7 @@ struct Scene::Impl {
     OrganTextures textures;
     Mat4 model = kIdentity4;
     render::MethodSettings method;
+    MethodChoices choices;                         ///< the organ's (OrganDesc::methods) or the scene's
     std::optional<OrganLoop> loop;                 ///< simulated organs
     std::optional<mesh::DeformableSurface> still;  ///< static organs: normals, tangents, planes once
     render::MeshHandle mesh;                       ///< static organs (a loop holds its own)
@@ -130,6 +151,7 @@ Scene::~Scene() {
 Result<Scene> Scene::create(const gl::GetProcAddressFn& getProcAddress, const SceneSettings& settings) {
   auto impl = std::make_unique<Impl>();
   impl->settings = settings;
+  if (!settings.gl) return Scene(std::move(impl));  // simulation only
   gl::GetProcAddressFn lookup = getProcAddress;
   if (!lookup) {
     auto context = context::createHeadlessContext(settings.context, settings.headless);
@@ -152,25 +174,19 @@ Result<OrganId> Scene::addOrgan(const OrganDesc& desc) {
   organ.model = desc.model;
   // 1 what moves it (a scenario) and what it looks like (mesh, material, textures).
   std::optional<scenario::Scenario> scenario;
-  OrganSource source{.mesh = desc.mesh,
-                     .material = desc.material,
-                     .meshScaleToMm = desc.meshScaleToMm,
-                     .materialOptions = s.settings.materials,
-                     .uvAtlasFallback = true};
   if (!desc.scenario.empty()) {
     auto parsed = scenario::loadScenario(desc.scenario, {.sharedMeshesDir = s.settings.sharedMeshesDir});
     if (!parsed) return parsed.error();
-    if (source.mesh.empty()) source.mesh = parsed->mesh;
-    source.meshScaleToMm = float(parsed->meshScaleToMm);
+    if (!desc.mesh.empty()) parsed->mesh = desc.mesh;  // the scenario simulates the organ drawn
     scenario = std::move(*parsed);
   } else if (desc.mesh.empty()) {
     return Error{"organ: give a mesh file, or a scenario that names one"};
   }
+  const OrganSource source = sourceOf(desc, s.settings, scenario ? &*scenario : nullptr);
   auto assets = loadOrganAssets(source);
   if (!assets) return assets.error();
   organ.assets = std::move(*assets);
   // 2 its mesh on the renderer: a loop for a simulated organ, else the rest shape once.
-  render::Renderer& r = *s.renderer;
   if (scenario) {
     OrganLoopConfig config = s.settings.loop;
     config.planes = organ.assets.planes;
@@ -178,11 +194,20 @@ Result<OrganId> Scene::addOrgan(const OrganDesc& desc) {
     auto loop = OrganLoop::create(*scenario, organ.assets.mesh, config);
     if (!loop) return loop.error();
     organ.loop.emplace(std::move(*loop));
-    if (auto attached = organ.loop->attach(r); !attached) return attached.error();
   } else {
     auto still = mesh::DeformableSurface::create(organ.assets.mesh, organ.assets.planes);
     if (!still) return still.error();
     organ.still.emplace(std::move(*still));
+  }
+  organ.choices = desc.methods.value_or(s.settings.methods);
+  if (!s.renderer) {  // simulation only
+    s.organs.push_back(std::move(organ));
+    return s.organs.size() - 1;
+  }
+  render::Renderer& r = *s.renderer;
+  if (organ.loop) {
+    if (auto attached = organ.loop->attach(r); !attached) return attached.error();
+  } else {
     const auto& m = *organ.still;
     auto handle =
         r.createMesh({m.positions(), m.normals(), m.tangents(), m.uvs(), m.triangles(), m.planes()});
@@ -193,7 +218,7 @@ Result<OrganId> Scene::addOrgan(const OrganDesc& desc) {
   auto textures = uploadOrganTextures(r, organ.assets);
   if (!textures) return textures.error();
   organ.textures = *textures;
-  auto method = organMethod(desc.method, organ.assets, organ.textures, s.settings.methods);
+  auto method = organMethod(desc.method, organ.assets, organ.textures, organ.choices);
   if (!method) return method.error();
   organ.method = std::move(*method);
   s.organs.push_back(std::move(organ));
@@ -203,9 +228,24 @@ Result<OrganId> Scene::addOrgan(const OrganDesc& desc) {
 Result<void> Scene::setMethod(OrganId id, render::ShadingMethod method) {
   auto o = m_impl->organ(id);
   if (!o) return o.error();
-  auto settings = organMethod(method, (*o)->assets, (*o)->textures, m_impl->settings.methods);
+  if (!m_impl->renderer) return Error{"setMethod: this scene has no renderer (SceneSettings::gl)"};
+  auto settings = organMethod(method, (*o)->assets, (*o)->textures, (*o)->choices);
   if (!settings) return settings.error();
   (*o)->method = std::move(*settings);
+  return {};
+}
+
+Result<void> Scene::setPositions(OrganId id, std::span<const Float3> positions) {
+  auto o = m_impl->organ(id);
+  if (!o) return o.error();
+  if (!(*o)->still)
+    return Error{"organ " + std::to_string(id) + ": its scenario moves it; set positions of static organs"};
+  const auto rest = (*o)->still->geometricRestPositions();
+  if (positions.size() != rest.size())
+    return Error{"organ " + std::to_string(id) + ": give " + std::to_string(rest.size()) +
+                 " positions (one per geometric vertex), not " + std::to_string(positions.size())};
+  (*o)->still->update(positions);
+  (*o)->changed = true;
   return {};
 }
 
@@ -257,6 +297,9 @@ void Scene::frameOrgans() {
 }
 const render::Camera& Scene::camera() const {
   return m_impl->lastCamera;
+}
+void Scene::setShadows(bool shadows) {
+  if (!m_impl->scene.lights.empty()) m_impl->scene.lights[0].castsShadows = shadows;
 }
 render::Scene& Scene::renderScene() {
   m_impl->lightsFollowFraming = false;
@@ -327,11 +370,18 @@ Result<StepReport> Scene::step(double dtS) {
 
 Result<void> Scene::upload() {
   Impl& s = *m_impl;
+  if (!s.renderer) return {};  // simulation only: nothing to upload
   if (auto current = s.makeCurrent(); !current) return current.error();
   for (Impl::Organ& o : s.organs) {
-    if (!o.loop || !o.changed) continue;
-    auto uploaded = o.loop->upload();
-    if (!uploaded) return uploaded.error();
+    if (!o.changed) continue;
+    if (o.loop) {
+      auto uploaded = o.loop->upload();
+      if (!uploaded) return uploaded.error();
+    } else {
+      const auto& m = *o.still;  // a host's shape (setPositions): what deforms
+      auto up = s.renderer->updateMesh(o.mesh, {0, m.positions(), m.normals(), m.tangents(), m.planes()});
+      if (!up) return up.error();
+    }
     o.changed = false;
   }
   return {};
@@ -344,8 +394,29 @@ Result<StepReport> Scene::update(double dtS) {
   return report;
 }
 
+Result<LoopFrame> Scene::advance(OrganId id, const InstrumentInput& input, Image8* image, int width,
+                                 int height) {
+  Impl& s = *m_impl;
+  auto o = s.organ(id);
+  if (!o) return o.error();
+  if (!(*o)->loop) return Error{"organ " + std::to_string(id) + ": a static organ has no frames to advance"};
+  if (!image) {  // phases 1-2; the next render uploads
+    (*o)->changed = true;
+    return (*o)->loop->step(input);
+  }
+  if (!s.renderer) return Error{"advance: this scene has no renderer to render with (SceneSettings::gl)"};
+  if (width <= 0 || height <= 0) return Error{"advance: the image must be at least 1 x 1 pixels"};
+  if (auto up = upload(); !up) return up.error();  // the other organs' changes
+  s.frame(float(width) / float(height));
+  s.buildObjects();
+  const RenderRequest request{
+      .scene = &s.scene, .width = width, .height = height, .image = image, .host = {}};
+  return (*o)->loop->advance(input, &request);
+}
+
 Result<void> Scene::render(const render::HostFramebuffer& target) {
   Impl& s = *m_impl;
+  if (!s.renderer) return Error{"render: this scene has no renderer (SceneSettings::gl)"};
   if (target.width <= 0 || target.height <= 0)
     return Error{"render: the viewport must be at least 1 x 1 pixels"};
   if (auto up = upload(); !up) return up.error();
@@ -356,6 +427,7 @@ Result<void> Scene::render(const render::HostFramebuffer& target) {
 
 Result<Image8> Scene::renderImage(int width, int height) {
   Impl& s = *m_impl;
+  if (!s.renderer) return Error{"render: this scene has no renderer (SceneSettings::gl)"};
   if (width <= 0 || height <= 0) return Error{"render: the image must be at least 1 x 1 pixels"};
   if (auto up = upload(); !up) return up.error();
   s.frame(float(width) / float(height));
@@ -367,6 +439,19 @@ Result<void> Scene::renderPng(const std::filesystem::path& png, int width, int h
   auto image = renderImage(width, height);
   if (!image) return image.error();
   return writePng(png, *image);
+}
+
+}  // namespace tissue::scene
+
+namespace tissue::scene {
+
+Result<SimulatedOrgan> loadSimulatedOrgan(const OrganDesc& desc, const SceneSettings& settings) {
+  auto parsed = scenario::loadScenario(desc.scenario, {.sharedMeshesDir = settings.sharedMeshesDir});
+  if (!parsed) return parsed.error();
+  if (!desc.mesh.empty()) parsed->mesh = desc.mesh;  // the scenario simulates the organ drawn
+  auto assets = loadOrganAssets(sourceOf(desc, settings, &*parsed));
+  if (!assets) return assets.error();
+  return SimulatedOrgan{.scenario = std::move(*parsed), .assets = std::move(*assets)};
 }
 
 }  // namespace tissue::scene

@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "command.h"
-#include "demo_render.h"
+#include "gl_environment.h"
 #include "loop_setup.h"
 #include "output.h"
 #include "tissue/core/atomic_file.h"
@@ -28,37 +28,30 @@ struct ReplayOptions {
 };
 
 Result<nlohmann::json> replay(const ReplayOptions& o) {
-  // Setup: the session, the scenario it was recorded with, and the loop.
+  // Setup: the session, and the scenario it was recorded with in a scene (GL with --render).
   auto session = scene::loadSession(o.session);
   if (!session) return session.error();
-  auto organ = loadLoopOrgan(session->scenario);
-  if (!organ) return organ.error();
-  organ->scenario.frames = static_cast<int>(session->frames.size());
-  auto loop = scene::OrganLoop::create(organ->scenario, organ->assets.mesh, {.planes = organ->assets.planes});
-  if (!loop) return loop.error();
-  if (auto match = scene::checkSessionMatches(*session, *loop); !match) return match.error();
-  std::optional<DemoRenderer> renderer;
-  std::optional<scene::RenderRequest> request;
-  Image8 image;
+  std::unique_ptr<context::GlContext> context;
   if (o.render) {
-    renderer.emplace(o.width, o.height);
-    auto attached = renderer->attachLoop(*loop, organ->assets, o.width, o.height, &image);
-    if (!attached) return attached.error();
-    request = *attached;
+    auto made = createAppContext(offscreenRequest());  // the scene draws offscreen
+    if (!made) return made.error();
+    context = std::move(*made);
   }
+  auto scene = makeLoopScene(context.get());
+  if (!scene) return scene.error();
+  if (auto added = scene->addOrgan({.scenario = session->scenario}); !added) return added.error();
+  const scene::OrganLoop& loop = *scene->loop(0);
+  if (auto match = scene::checkSessionMatches(*session, loop); !match) return match.error();
 
   // The frames, each one pass through the library's loop with the recorded input.
-  PhaseSamples phases;
-  std::vector<scenario::FrameMetrics> metrics;
-  metrics.reserve(session->frames.size());
+  scene::LoopRecord record;
+  Image8 image;
   for (std::size_t i = 0; i < session->frames.size(); ++i) {
-    if (renderer)
-      if (auto ok = renderer->makeCurrent(); !ok) return ok.error();
-    auto f = loop->advance(scene::sessionInput(*session, i), request ? &*request : nullptr);
+    auto f =
+        scene->advance(0, scene::sessionInput(*session, i), o.render ? &image : nullptr, o.width, o.height);
     if (!f) return Error{session->file.string() + ": frame " + std::to_string(i) + ": " + f.error().message};
-    phases.add(*f);
-    metrics.push_back(f->simulation);
-    if (request && !o.outDir.empty() && (i + 1) % std::size_t(o.imageEvery) == 0) {
+    record.add(*f, loop);
+    if (o.render && !o.outDir.empty() && (i + 1) % std::size_t(o.imageEvery) == 0) {
       char name[32];
       std::snprintf(name, sizeof name, "frame_%04zu.png", i + 1);
       if (auto w = writePng(o.outDir / name, image); !w) return w.error();
@@ -66,23 +59,23 @@ Result<nlohmann::json> replay(const ReplayOptions& o) {
   }
 
   // Report: the fingerprint, the frame times and every phase.
-  const auto summary = scenario::summarize(metrics);
-  const auto& total = phases.phases.back().second;
+  const auto summary = scenario::summarize(record.frames);
+  const auto& total = record.phases.phases.back().second;
   const auto frameMs = summarizeSamples(total);
   nlohmann::json j{
       {"session", session->file.string()},
-      {"scenario", organ->scenario.file.string()},
+      {"scenario", loop.run().scenario().file.string()},
       {"frames", session->frames.size()},
       {"rendered", o.render},
-      {"positions_sha256", scene::positionsSha256(loop->geometricPositions())},
+      {"positions_sha256", scene::positionsSha256(loop.geometricPositions())},
       {"frame_ms",
        {{"median", rounded(frameMs.median)}, {"p99", rounded(frameMs.p99)}, {"max", rounded(frameMs.max)}}},
-      {"phases_ms", phaseReport(phases)},
+      {"phases_ms", phaseReport(record.phases)},
       {"max_contact_force_N", rounded(summary.maxForceN)},
       {"divergence_events", summary.divergenceEvents},
       {"nan_frames", summary.nanFrames}};
   if (!o.outDir.empty()) {
-    if (auto w = writeTextFileAtomic(o.outDir / "frames.csv", scenario::framesCsv(metrics)); !w)
+    if (auto w = writeTextFileAtomic(o.outDir / "frames.csv", scenario::framesCsv(record.frames)); !w)
       return w.error();
     if (auto w = writeTextFileAtomic(o.outDir / "report.json", j.dump(2) + "\n"); !w) return w.error();
     j["out"] = o.outDir.string();

@@ -6,14 +6,13 @@
 #include <iostream>
 
 #include "command.h"
-#include "demo_render.h"
+#include "gl_environment.h"
+#include "loop_setup.h"
 #include "organ_data.h"
 #include "output.h"
 #include "tissue/core/atomic_file.h"
 #include "tissue/core/statistics.h"
 #include "tissue/core/stopwatch.h"
-#include "tissue/mesh/deformable_surface.h"
-#include "tissue/mesh/load_mesh.h"
 #include "tissue/scenario/scenario_run.h"
 
 namespace tissue::sim_app {
@@ -27,18 +26,17 @@ struct SimulateOptions {
   bool images = false;
 };
 
-/// Renders the run's current shape with the basic renderer: needs a material file.
+/// Renders the run's current shape, lit (a scene::Scene of the static organ on a headless context).
 Result<std::string> renderLastFrame(const scenario::ScenarioRun& run, const std::filesystem::path& png) {
+  auto context = createAppContext(offscreenRequest());
+  if (!context) return context.error();
+  auto scene = scene::Scene::create((*context)->procAddressFunction(), dataSceneSettings());
+  if (!scene) return scene.error();
   auto organ =
-      scene::loadOrganAssets(organSourceFor(run.scenario().mesh, float(run.scenario().meshScaleToMm)));
+      scene->addOrgan({.mesh = run.scenario().mesh, .meshScaleToMm = float(run.scenario().meshScaleToMm)});
   if (!organ) return organ.error();
-  auto surface = mesh::DeformableSurface::create(organ->mesh, organ->planes);
-  if (!surface) return surface.error();
-  if (surface->geometricRestPositions().size() != run.mesh().positions.size())
-    return Error{"the rendered mesh and the simulated mesh differ in vertex count"};
-  surface->update(run.positions());
-  DemoRenderer renderer(960, 720);
-  if (auto ok = renderer.render(*surface, *organ, png); !ok) return ok.error();
+  if (auto shaped = scene->setPositions(*organ, run.positions()); !shaped) return shaped.error();
+  if (auto ok = scene->renderPng(png, 960, 720); !ok) return ok.error();
   return png.filename().string();
 }
 

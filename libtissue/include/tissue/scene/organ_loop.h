@@ -17,6 +17,9 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "tissue/core/image.h"
 #include "tissue/core/result.h"
@@ -51,6 +54,22 @@ struct LoopFrame {
   scenario::FrameMetrics simulation;  ///< force on the tool (N), contacts, divergence, ...
   mesh::SurfaceUpdateStats mesh;      ///< per mesh phase ms and the planes re-fitted
   LoopPhases ms;
+};
+
+/// Per-frame cost of each phase over a run (ms), in the order the loop runs them: what a loop
+/// report summarises (median, p99, max per phase; tissue/core/statistics.h).
+struct LoopPhaseSamples {
+  std::vector<std::pair<std::string, std::vector<double>>> phases{
+      {"1 simulate (springs, contact, grasp)", {}},
+      {"2 mesh: positions in", {}},
+      {"2 mesh: normals", {}},
+      {"2 mesh: planes (incremental)", {}},
+      {"2 mesh: tangent frames", {}},
+      {"3 upload", {}},
+      {"4 render (lit, read back)", {}},
+      {"frame total", {}}};
+  /// Appends one frame's figures.
+  void add(const LoopFrame& frame);
 };
 
 /// Where phase 4 draws. Offscreen: into `image` (renderImage, read back); host: into the
@@ -128,6 +147,25 @@ class OrganLoop {
   struct Impl;
   explicit OrganLoop(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> m_impl;
+};
+
+/// What a run of the loop keeps for its report (a host's session summary; tissue-sim's demo and
+/// replay): every frame's metrics and phase costs, the planes re-fitted, and the shapes at the
+/// hardest push without a grasp and the hardest pull while grasping (the force along z, N).
+struct LoopRecord {
+  std::vector<scenario::FrameMetrics> frames;
+  LoopPhaseSamples phases;
+  double refittedFraction = 0.0;           ///< planes re-fitted per frame, as a fraction of all (summed)
+  double maxPushN = 0.0;                   ///< N, the largest +z force on the tool without a grasp
+  double maxPullN = 0.0;                   ///< N, the largest -z force while grasping
+  long pokedFrame = -1, liftedFrame = -1;  ///< frames of those two (-1: none)
+  std::vector<Float3> pokedPositions, liftedPositions;  ///< mm, the geometric vertices then
+  /// Appends the frame `loop` just ran (`frame`, its result).
+  void add(const LoopFrame& frame, const OrganLoop& loop);
+  /// The mean fraction of planes re-fitted per frame.
+  double meanRefittedFraction() const {
+    return frames.empty() ? 0.0 : refittedFraction / double(frames.size());
+  }
 };
 
 }  // namespace tissue::scene

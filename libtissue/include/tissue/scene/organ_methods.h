@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "tissue/core/result.h"
+#include "tissue/reference/screen_convolution.h"
 #include "tissue/render/renderer.h"
 #include "tissue/render/scene.h"
 #include "tissue/render/shading.h"
@@ -32,9 +33,17 @@ struct MethodChoices {
   int taps = 17;                 ///< separable taps, odd, 5..63
   int rank = 1;                  ///< separable components (svd, deon)
   int gaussians = 6;             ///< texture-space Gaussians, 1..8
+  int mapSize = 1024;            ///< texture-space T_max, irradiance map texels
+  bool cull = true;              ///< texture-space and parallax lightmap: Jimenez et al. 2008 §3
+  bool clip = true;              ///< texture-space and parallax lightmap: Jimenez et al. 2008 §5
+  bool depthSize = true;         ///< texture-space: map size from the distance (Jimenez §4)
   int samples = 32;              ///< ray-march samples per pixel, 1..256
   bool adaptive = true;          ///< ray march: adaptive quality (RayMarchSettings::adaptive)
   float parallaxDepthMm = 1.5f;  ///< mm, depth of the parallax inner layer below the surface
+  /// Parallax: n_inside / n_outside of the outer layer (>= 1); empty: the material file's ior.
+  std::optional<float> refractiveIndex{};
+  /// Parallax lightmap: size, reduction, blur (its cull and clip are the fields above).
+  render::ParallaxLightmapSettings lightmap{};
 };
 
 /// An organ's textures on one renderer (empty handles: not there).
@@ -57,11 +66,17 @@ std::vector<render::ShadingMethod> offeredMethods(const OrganAssets& organ);
 Result<render::MethodSettings> organMethod(render::ShadingMethod method, const OrganAssets& organ,
                                            const OrganTextures& textures, const MethodChoices& choices = {});
 
+/// The separable method's ground truth for `organ`: its first layer's dipole profile normalised
+/// to 1 (mm^-2), the R a CPU reference convolves with (reference::convolveScreen), built as the
+/// kernel of `choices` is (materials::makeSeparableMaterial).
+Result<reference::RadialProfile> separableTruth(const OrganAssets& organ, const MethodChoices& choices = {});
+
 /// The organ as a scene object of `mesh`, with its textures and `method`.
 render::SceneObject organObject(render::MeshHandle mesh, const OrganTextures& textures,
                                 render::MethodSettings method);
 
-/// "lit", "separable", "texture-space", "ray-march" or "parallax"; the error lists them.
+/// "lit", "separable", "texture-space", "ray-march" (or "raymarch") or "parallax"; the error
+/// lists them.
 Result<render::ShadingMethod> parseShadingMethod(std::string_view name);
 
 }  // namespace tissue::scene

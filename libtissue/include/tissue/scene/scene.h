@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "tissue/context/headless_context.h"
@@ -26,6 +27,7 @@
 #include "tissue/gl/proc_address.h"
 #include "tissue/render/renderer.h"
 #include "tissue/render/scene.h"
+#include "tissue/scenario/scenario.h"
 #include "tissue/scene/organ_assets.h"
 #include "tissue/scene/organ_loop.h"
 #include "tissue/scene/organ_methods.h"
@@ -34,12 +36,13 @@ namespace tissue::scene {
 
 /// An organ to add (plain struct with defaults).
 struct OrganDesc {
-  std::filesystem::path mesh;      ///< empty with a scenario: the scenario's own mesh
-  std::filesystem::path material;  ///< data/materials/<organ>.json; empty: defaultMaterial()
-  std::filesystem::path scenario;  ///< data/scenarios/*.json; empty: a static organ
-  Mat4 model = kIdentity4;         ///< column-major, object (mm) to world (mm); rigid + uniform scale
+  std::filesystem::path mesh{};      ///< with a scenario: simulated instead of its own (empty: its own)
+  std::filesystem::path material{};  ///< data/materials/<organ>.json; empty: defaultMaterial()
+  std::filesystem::path scenario{};  ///< data/scenarios/*.json; empty: a static organ
+  Mat4 model = kIdentity4;           ///< column-major, object (mm) to world (mm); rigid + uniform scale
   render::ShadingMethod method = render::ShadingMethod::Lit;
   float meshScaleToMm = 1.0f;  ///< mm per file unit of a static organ's mesh (a scenario states its own)
+  std::optional<MethodChoices> methods{};  ///< this organ's kernel, taps, ...; empty: SceneSettings::methods
 };
 
 /// Settings of a scene (plain struct with defaults).
@@ -48,9 +51,15 @@ struct SceneSettings {
   context::ContextRequest context;    ///< the scene's own headless context only
   context::HeadlessOptions headless{.backend = {}, .log = false};  ///< EGL, then OSMesa
   MaterialFileOptions materials;                                   ///< where material textures are looked up
+  /// An organ without a material file gets <materialsDir>/<its mesh's stem>.json when that file
+  /// exists (a project's data/materials/), else defaultMaterial(). Empty: always the default.
+  std::filesystem::path materialsDir;
   std::filesystem::path sharedMeshesDir;  ///< where scenarios find meshes they name by bare name
   OrganLoopConfig loop;                   ///< planes, re-fit tolerance, mesh threads, the instrument
   MethodChoices methods;                  ///< kernel, taps, Gaussians, ray-march samples
+  /// false: no context nor renderer, the simulation only (a replay, a server): step() and
+  /// advance() without an image work, render*() and setMethod() fail, upload() does nothing.
+  bool gl = true;
   /// step(dt) runs at most this many scenario frames (a host that stalls does not make the next
   /// frame slower still); the time beyond is dropped and counted in StepReport::droppedS.
   int maxFramesPerStep = 4;
@@ -75,6 +84,17 @@ struct StepReport {
 
 using OrganId = std::size_t;
 
+/// A scenario and the organ it moves, loaded as Scene::addOrgan loads them (GL-free): for a loop
+/// without a renderer (OrganLoop::create with assets.mesh and assets.planes).
+struct SimulatedOrgan {
+  scenario::Scenario scenario;
+  OrganAssets assets;
+};
+
+/// Loads `desc`'s scenario (its mesh, or desc.mesh instead) and the organ's assets, with the
+/// material rule and folders of `settings`. Errors name the file at fault.
+Result<SimulatedOrgan> loadSimulatedOrgan(const OrganDesc& desc, const SceneSettings& settings = {});
+
 /// The scene. Movable, not copyable.
 class Scene {
  public:
@@ -89,6 +109,10 @@ class Scene {
   Result<OrganId> addOrgan(const OrganDesc& organ);
   /// Switches an organ's method at run time; the error says which this organ offers.
   Result<void> setMethod(OrganId organ, render::ShadingMethod method);
+  /// A static organ's shape as the host deforms it (its own simulator, a recorded state): one
+  /// position per geometric vertex of its mesh (mm, object space); normals, planes and tangents
+  /// follow, uploaded at the next render. A simulated organ's scenario moves it: an error.
+  Result<void> setPositions(OrganId organ, std::span<const Float3> geometricPositionsMm);
   /// Column-major, object mm to world mm: rigid motion and uniform scale.
   Result<void> setTransform(OrganId organ, const Mat4& model);
   std::size_t organCount() const;
@@ -113,6 +137,10 @@ class Scene {
   void frameOrgans();
   /// The camera of the last render (framed or fixed).
   const render::Camera& camera() const;
+  /// The first light casts shadows (and gives the separable method its transmission) or not
+  /// (the default); the same as renderScene().lights[0].castsShadows, with the lights still
+  /// following the framing.
+  void setShadows(bool shadows);
   /// Lights, background, exposure (the objects are the scene's). Lights follow the framing
   /// until this is called.
   render::Scene& renderScene();
@@ -124,6 +152,13 @@ class Scene {
   /// step(dtS) then upload(): the whole update of a frame.
   Result<StepReport> update(double dtS);
 
+  /// One frame of simulated organ `organ` with exact input (a recorded session's frame, a haptic
+  /// device's sample; poses in the organ's own frame), the host's fixed-step loop: OrganLoop::advance's
+  /// four phases, the fourth rendering the whole scene into `image` (`width` x `height` pixels,
+  /// read back) when `image` is given. Other organs do not move. GL with `image`.
+  Result<LoopFrame> advance(OrganId organ, const InstrumentInput& input = {}, Image8* image = nullptr,
+                            int width = 0, int height = 0);
+
   /// Phases 3-4 into the host's framebuffer (state restored; see render::Renderer::renderTo).
   Result<void> render(const render::HostFramebuffer& target);
   /// Phases 3-4 into the scene's own target, read back (RGBA8, rows top to bottom).
@@ -131,7 +166,7 @@ class Scene {
   /// renderImage, written as PNG atomically.
   Result<void> renderPng(const std::filesystem::path& png, int width, int height);
 
-  /// The renderer (context current for its calls), e.g. for its last timings.
+  /// The renderer (context current for its calls), e.g. for its last timings; SceneSettings::gl only.
   render::Renderer& renderer();
 
  private:
