@@ -10,7 +10,7 @@
 #include "gl_environment.h"
 #include "output.h"
 #include "report_output.h"
-#include "texture_space_setup.h"
+#include "tissue/studies/texture_space_organ.h"
 #include "tissue/studies/tsd_bench.h"
 
 namespace tissue::sim_app {
@@ -28,9 +28,10 @@ int run(BenchOptions o, const GlobalOptions& global) {
   const auto meshPath = o.mesh.empty() ? dataDir() / "meshes" / "liver.obj" : std::filesystem::path(o.mesh);
   auto organ = studies::loadTsdOrgan(meshPath, o.scale);
   if (!organ) return fail(cmd, organ.error().message);
-  if (auto g = skinGaussians(o.config.gaussians); !g)
-    return fail(cmd, g.error().message);  // names the option
   o.config.skinTable = sharedDir() / "reference" / "deon_skin_gaussians.tsv";
+  if (auto g = studies::skinGaussians(o.config.skinTable, o.config.gaussians); !g)
+    return fail(cmd, "--gaussians " + std::to_string(o.config.gaussians) + ": " + g.error().message +
+                         " (the shared folder: $TISSUE_SHARED_DIR)");
   o.config.mesh = meshPath.string();
   o.config.chart = !o.places.chart.empty();
   o.config.image = !o.places.image.empty();
