@@ -48,7 +48,7 @@ TEST(Report, ABadChartFailsNamingItAfterTheTextFiles) {
   std::filesystem::remove_all(dir);
   Report r;
   r.add("kept.md", "kept\n");
-  r.charts.push_back({"bad.png", {.title = "empty"}, {}});  // no series: refused
+  r.charts.push_back({"bad.png", {.title = "empty", .xLabel = {}, .yLabel = {}}, {}});  // no series: refused
   auto ok = writeReport(dir, r);
   ASSERT_FALSE(ok);
   EXPECT_NE(ok.error().message.find("bad.png"), std::string::npos) << ok.error().message;

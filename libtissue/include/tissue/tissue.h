@@ -75,7 +75,10 @@
 // profile choice, re-fit comparisons), for hosts that measure as tissue-sim does.
 #include "tissue/studies/coverage.h"
 #include "tissue/studies/deformations.h"
+#include "tissue/studies/indent_study.h"
+#include "tissue/studies/kernel_report.h"
 #include "tissue/studies/kernel_study.h"
+#include "tissue/studies/organ_stability_report.h"
 #include "tissue/studies/parallax_scene.h"
 #include "tissue/studies/parallax_study.h"
 #include "tissue/studies/profile_study.h"
@@ -86,6 +89,7 @@
 #include "tissue/studies/report.h"
 #include "tissue/studies/sim_bench.h"
 #include "tissue/studies/sss_bench.h"
+#include "tissue/studies/stability_report.h"
 #include "tissue/studies/texture_space_organ.h"
 #include "tissue/studies/tsd_bench.h"
 #include "tissue/studies/tsd_error.h"

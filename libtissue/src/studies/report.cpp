@@ -24,10 +24,13 @@ std::string csvCell(const std::string& cell) {
   return quoted + "\"";
 }
 
-std::string printed(const char* format, int digits, double value) {
+std::string printed(bool fixedPoint, int digits, double value) {
   if (std::isnan(value)) return "-";
   char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, digits, value);
+  if (fixedPoint)
+    std::snprintf(buffer, sizeof buffer, "%.*f", digits, value);
+  else
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
   return buffer;
 }
 
@@ -67,10 +70,10 @@ std::string csvTable(const Table& table) {
 }
 
 std::string fixed(double value, int digits) {
-  return printed("%.*f", digits, value);
+  return printed(true, digits, value);
 }
 std::string general(double value, int digits) {
-  return printed("%.*g", digits, value);
+  return printed(false, digits, value);
 }
 
 Result<void> writeReport(const std::filesystem::path& dir, const Report& report) {

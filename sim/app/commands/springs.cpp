@@ -6,7 +6,9 @@
 
 #include "command.h"
 #include "output.h"
+#include "tissue/core/statistics.h"
 #include "tissue/core/stopwatch.h"
+#include "tissue/mesh/deformable_surface.h"
 #include "tissue/mesh/load_mesh.h"
 #include "tissue/sim/lattice.h"
 #include "tissue/sim/mass.h"
@@ -27,19 +29,6 @@ struct SpringsOptions {
   int repeats = 5;
 };
 
-/// A surface as geometric vertices (merged across UV seams), as the lattice needs.
-Result<std::pair<std::vector<Float3>, std::vector<Triangle>>> loadGeometricSurface(const SpringsOptions& o) {
-  auto mesh = mesh::loadMesh(o.file, {.scaleToMm = o.scale});
-  if (!mesh) return mesh.error();
-  std::vector<Float3> positions(mesh->geometricVertexCount);
-  for (std::size_t r = 0; r < mesh->positions.size(); ++r)
-    positions[mesh->geometricIndex[r]] = mesh->positions[r];
-  std::vector<Triangle> triangles;
-  for (const Triangle& t : mesh->triangles)
-    triangles.push_back({mesh->geometricIndex[t[0]], mesh->geometricIndex[t[1]], mesh->geometricIndex[t[2]]});
-  return std::pair{std::move(positions), std::move(triangles)};
-}
-
 /// Runs `build` o.repeats times; the median wall time in ms goes to out["build_ms"].
 template <class Build>
 auto timed(const SpringsOptions& o, nlohmann::json& out, Build build) {
@@ -50,10 +39,7 @@ auto timed(const SpringsOptions& o, nlohmann::json& out, Build build) {
     result = build();
     ms.push_back(watch.elapsedMs());
   }
-  if (!ms.empty()) {
-    std::sort(ms.begin(), ms.end());
-    out["build_ms"] = ms[ms.size() / 2];
-  }
+  if (!ms.empty()) out["build_ms"] = summarizeSamples(ms).median;
   return result;
 }
 
@@ -81,9 +67,11 @@ int run(const GlobalOptions& global, const SpringsOptions& o) {
     out["mass_g"] = std::accumulate(masses->begin(), masses->end(), 0.0);
   } else if (source == "surface" || source == "lattice") {
     if (volumeFile) return fail("springs", o.file + ": " + source + " springs need a surface mesh");
-    auto surface = loadGeometricSurface(o);
+    auto surface = mesh::loadMesh(o.file, {.scaleToMm = o.scale});
     if (!surface) return fail("springs", surface.error().message);
-    const auto& [positions, triangles] = *surface;
+    // Geometric vertices (merged across UV seams), as the lattice needs.
+    const auto positions = mesh::geometricPositionsOf(*surface);
+    const auto triangles = mesh::geometricTrianglesOf(*surface);
     out["surface_vertices"] = positions.size();
     out["surface_triangles"] = triangles.size();
     if (source == "surface") {
