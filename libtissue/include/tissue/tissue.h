@@ -88,6 +88,7 @@
 #include "tissue/studies/refit_study.h"
 #include "tissue/studies/report.h"
 #include "tissue/studies/sim_bench.h"
+#include "tissue/studies/spring_network_report.h"
 #include "tissue/studies/sss_bench.h"
 #include "tissue/studies/stability_report.h"
 #include "tissue/studies/texture_space_organ.h"
