@@ -34,6 +34,17 @@ void printResult(const GlobalOptions& global, const nlohmann::json& result) {
   }
 }
 
+void printJsonText(const GlobalOptions& global, const std::string& jsonText) {
+  printResult(global, nlohmann::json::parse(jsonText));
+}
+
+int writeReportTo(const std::string& command, const std::filesystem::path& dir,
+                  const studies::Report& report) {
+  if (dir.empty()) return 0;
+  if (auto ok = studies::writeReport(dir, report); !ok) return fail(command, ok.error().message);
+  return 0;
+}
+
 int fail(const std::string& command, const std::string& message) {
   std::cerr << "tissue-sim " << command << ": " << message << std::endl;
   return 1;

@@ -8,11 +8,20 @@
 #include <string>
 
 #include "command.h"
+#include "tissue/studies/report.h"
 
 namespace tissue::sim_app {
 
 /// Prints `result` as one JSON object when `global.json`, else as "key: value" lines.
 void printResult(const GlobalOptions& global, const nlohmann::json& result);
+
+/// Prints the JSON object `jsonText` (a library report's JSON) as printResult does.
+void printJsonText(const GlobalOptions& global, const std::string& jsonText);
+
+/// Writes `report` into `dir` (tissue/studies/report.h) unless `dir` is empty: 0, or fail's
+/// exit code after the error line.
+int writeReportTo(const std::string& command, const std::filesystem::path& dir,
+                  const studies::Report& report);
 
 /// Prints one error line on stderr and returns the exit code to use (1).
 int fail(const std::string& command, const std::string& message);

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace tissue::studies {
@@ -95,6 +96,35 @@ TEST(ProfileStudy, ThickMultipoleIsTheDipoleAndBurleyKeepsItsAlbedo) {
 
 TEST(ProfileStudy, RefusesAnEmptyMedium) {
   EXPECT_FALSE(profileChannel(optics::LayeredMedium{}, {0.01, 10}, ProfileConfig{}));
+}
+
+TEST(ProfileStudy, ChannelsShareOneGridAndThinSlabsWarnTheMultipole) {
+  const std::vector<optics::LayeredMedium> media = {halfSpace(1.4, 0.01, 1.0, 0.8),
+                                                    halfSpace(1.4, 0.1, 2.0, 0.8)};
+  ProfileStudyConfig config;
+  config.bins = 50;
+  auto study = studyProfile(media, config);
+  ASSERT_TRUE(study) << study.error().message;
+  ASSERT_EQ(study->channels.size(), 2u);
+  EXPECT_TRUE(study->warnings.empty());
+  // The grid reaches the farther of the two default radii (the less absorbing medium's).
+  EXPECT_NEAR(study->grid.drMm * 50,
+              std::max(defaultProfileRadiusMm(media[0]), defaultProfileRadiusMm(media[1])), 1e-9);
+  for (const auto& c : study->channels)
+    EXPECT_EQ(c.rdRadial.size(), 50u);
+  EXPECT_GT(study->channels[0].rd, study->channels[1].rd);  // less absorption reflects more
+  const std::string json = profileStudyJson(*study, false);
+  for (const char* key : {"\"Rd\"", "\"profile_us\"", "\"radial_bins\": 50"})
+    EXPECT_NE(json.find(key), std::string::npos) << key;
+  EXPECT_EQ(json.find("\"photons\""), std::string::npos);
+
+  optics::LayeredMedium slab;
+  slab.layers.push_back({1.4, 0.01, 1.0, 0.8, 0.1});  // 0.1 mm < 1/sigma_t' = 5 mm
+  config.profile.method = ProfileMethod::Multipole;
+  auto thin = studyProfile({slab}, config);
+  ASSERT_TRUE(thin) << thin.error().message;
+  EXPECT_EQ(thin->warnings.size(), 1u);
+  EXPECT_FALSE(studyProfile({}, config));
 }
 
 }  // namespace

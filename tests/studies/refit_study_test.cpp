@@ -78,5 +78,21 @@ TEST(RefitStudy, ExactIncrementalRefitIsTheFullRefit) {
   EXPECT_GT(global.fullRefitMs, 0.0);
 }
 
+TEST(RefitStudy, MeshBenchPokesTheFractionAskedForAndBendsEverything) {
+  const Grid g = waveGrid();
+  const MeshRefitBench b = benchRefitOnMesh(g.positions, g.triangles, {}, 0.05, 3, {1e-2});
+  EXPECT_EQ(b.vertices, g.positions.size());
+  EXPECT_EQ(b.repeats, 3);
+  EXPECT_NEAR(b.poke.movedFraction, 0.05, 0.01);
+  EXPECT_GT(b.bend.movedFraction, 0.9);
+  EXPECT_LT(b.poke.exact.maxNormalDeviationRad, 1e-5);
+  EXPECT_GT(b.meanNeighbourhood, 10.0);  // r = 3.1 mm on a 1 mm grid: about 30 vertices
+  EXPECT_LT(b.meanNeighbourhood, 60.0);
+  const std::string json = meshRefitBenchJson(b);
+  for (const char* key :
+       {"\"moved_fraction\"", "\"speedup\"", "\"global\"", "\"tolerant\"", "\"mean_neighbourhood\""})
+    EXPECT_NE(json.find(key), std::string::npos) << key;
+}
+
 }  // namespace
 }  // namespace tissue::studies

@@ -66,5 +66,28 @@ TEST(SimBench, TimingsCoverTheFrame) {
   EXPECT_LE(f.msBest, f.ms);
 }
 
+TEST(SimBench, EveryIntegratorOnEachPatchAndTheFastSolverSkippedAboveItsLimit) {
+  SimBenchConfig config;
+  config.maxSprings = 1000;
+  config.threads = 2;
+  config.fastSolverMaxSprings = 500;  // below the 1000-spring patch
+  auto bench = runSimBench(config);
+  ASSERT_TRUE(bench) << bench.error().message;
+  ASSERT_EQ(bench->results.size(), 5u);
+  for (const auto& t : bench->results) {
+    const bool fast = t.integrator == sim::Integrator::FastMassSpring;
+    EXPECT_EQ(t.skipped.empty(), !fast);
+    if (!fast) {
+      EXPECT_GT(t.msPerStep, 0.0);
+    }
+  }
+  ASSERT_EQ(bench->forcePass.size(), 2u);  // 1 thread and 2
+  EXPECT_FALSE(bench->framePath || bench->scenario);
+  const std::string json = simBenchJson(*bench);
+  for (const char* key : {"\"results\"", "\"force_pass\"", "\"skipped\"", "\"integrator\": \"verlet\""})
+    EXPECT_NE(json.find(key), std::string::npos) << key;
+  EXPECT_NE(simBenchText(*bench).find("skipped: factor too large"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace tissue::studies

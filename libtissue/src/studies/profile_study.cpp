@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "json_text.h"
 #include "tissue/optics/burley.h"
 #include "tissue/optics/dipole.h"
 #include "tissue/optics/multipole.h"
@@ -24,6 +25,15 @@ double timeEvaluation(F&& evaluate) {
     elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   } while (elapsed < 0.02);
   return elapsed / repeats;
+}
+
+// One value per channel: a number for a single-wavelength medium, [R, G, B] for a material.
+nlohmann::json perChannel(const std::vector<ChannelProfile>& ch, double ChannelProfile::*field) {
+  if (ch.size() == 1) return ch[0].*field;
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& c : ch)
+    a.push_back(c.*field);
+  return a;
 }
 
 }  // namespace
@@ -97,6 +107,64 @@ Result<ChannelProfile> profileChannel(const optics::LayeredMedium& medium, const
   };
   out.seconds = timeEvaluation(evaluate);
   return out;
+}
+
+Result<ProfileStudy> studyProfile(const std::vector<optics::LayeredMedium>& media,
+                                  const ProfileStudyConfig& config) {
+  if (media.empty()) return Error{"no medium to profile"};
+  if (config.bins < 1 || config.drMm < 0.0)
+    return Error{"the profile needs >= 1 ring and a ring width >= 0 mm"};
+  ProfileStudy study{.method = config.profile.method, .seed = config.profile.seed};
+  if (study.method != ProfileMethod::MonteCarlo && media[0].layers.size() > 1)
+    study.warnings.push_back("analytic methods use the first layer only");
+  if (study.method == ProfileMethod::Multipole && multipoleUnreliable(media[0]))
+    study.warnings.push_back("the slab is thinner than 1/sigma_t'; the multipole is unreliable");
+  double rMax = 0;
+  for (const auto& m : media)
+    rMax = std::max(rMax, defaultProfileRadiusMm(m));
+  study.grid = {.drMm = config.drMm > 0 ? config.drMm : rMax / config.bins, .bins = config.bins};
+  for (const auto& m : media) {
+    auto ch = profileChannel(m, study.grid, config.profile);
+    if (!ch) return ch.error();
+    study.channels.push_back(std::move(*ch));
+  }
+  return study;
+}
+
+std::string profileStudyJson(const ProfileStudy& s, bool radial) {
+  const auto& ch = s.channels;
+  nlohmann::json out{{"Rd", perChannel(ch, &ChannelProfile::rd)},
+                     {"Rd_stderr", perChannel(ch, &ChannelProfile::rdStderr)},
+                     {"Tt", perChannel(ch, &ChannelProfile::tt)},
+                     {"Tt_stderr", perChannel(ch, &ChannelProfile::ttStderr)},
+                     {"specular", perChannel(ch, &ChannelProfile::specular)}};
+  double seconds = 0;
+  std::int64_t photons = 0;
+  for (const auto& c : ch)
+    seconds += c.seconds, photons += c.photons;
+  if (s.method == ProfileMethod::MonteCarlo)
+    out.update({{"photons", photons},
+                {"threads", ch[0].threads},
+                {"seed", s.seed},
+                {"seconds", seconds},
+                {"photons_per_second", static_cast<double>(photons) / seconds}});
+  else
+    out["profile_us"] = seconds * 1e6 / static_cast<double>(ch.size());  // one channel's radial profile
+  if (radial) {
+    nlohmann::json r{{"dr_mm", s.grid.drMm}};
+    for (int i = 0; i < s.grid.bins; ++i)
+      r["r_mm"].push_back(s.grid.radius(i));
+    if (ch.size() == 1)
+      r["Rd"] = ch[0].rdRadial;
+    else
+      for (const auto& c : ch)
+        r["Rd"].push_back(c.rdRadial);
+    out["radial"] = r;
+  } else {
+    out.update({{"radial_bins", s.grid.bins}, {"radial_dr_mm", s.grid.drMm}});
+  }
+  out["units"] = "r in mm, radial Rd in mm^-2, Rd/Tt fractions of incident power (specular excluded)";
+  return detail::jsonText(out);
 }
 
 }  // namespace tissue::studies

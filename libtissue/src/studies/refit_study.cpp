@@ -6,11 +6,14 @@
 #include <string>
 #include <vector>
 
+#include "json_text.h"
 #include "tissue/core/statistics.h"
 #include "tissue/core/stopwatch.h"
+#include "tissue/core/vec_math.h"
 #include "tissue/mesh/deformable_surface.h"
 #include "tissue/mesh/vertex_normals.h"
 #include "tissue/scenario/scenario_run.h"
+#include "tissue/studies/deformations.h"
 
 namespace tissue::studies {
 namespace {
@@ -152,6 +155,88 @@ Result<ScenarioRefitStudy> studyRefitUnderScenario(const scenario::Scenario& sce
   out.exact = before.result(0.0);
   out.tolerant = after.result(maxNormalErrorRad);
   return out;
+}
+
+namespace {
+
+nlohmann::json comparisonJson(const RefitComparison& c, double maxNormalErrorRad) {
+  return {{"moved_fraction", c.movedFraction},
+          {"refitted_fraction", c.exact.refittedFraction},
+          {"full_refit_ms", c.fullRefitMs},
+          {"incremental_refit_ms", c.exact.refitMs},
+          {"speedup", c.speedup()},
+          {"max_normal_deviation_rad", c.exact.maxNormalDeviationRad},
+          {"max_offset_deviation_mm", c.exact.maxOffsetDeviationMm},
+          {"tolerant",
+           {{"max_normal_error_rad", maxNormalErrorRad},
+            {"refitted_fraction", c.tolerant.refittedFraction},
+            {"refit_ms", c.tolerant.refitMs},
+            {"max_normal_deviation_rad", c.tolerant.maxNormalDeviationRad},
+            {"max_offset_deviation_mm", c.tolerant.maxOffsetDeviationMm}}}};
+}
+
+nlohmann::json seriesJson(const RefitSeries& r) {
+  return {{"max_normal_error_rad", r.maxNormalErrorRad},
+          {"mean_refitted_fraction", r.meanRefittedFraction},
+          {"planes_ms_median", r.planesMsMedian},
+          {"planes_ms_p99", r.planesMsP99},
+          {"planes_ms_max", r.planesMsMax},
+          {"max_normal_deviation_rad", r.maxNormalDeviationRad},
+          {"max_offset_deviation_mm", r.maxOffsetDeviationMm}};
+}
+
+}  // namespace
+
+MeshRefitBench benchRefitOnMesh(std::span<const Float3> rest, std::span<const Triangle> tris,
+                                const mesh::PlaneFitSettings& settings, double pokeFraction, int repeats,
+                                const mesh::PlaneRefitSettings& refit) {
+  std::vector<Float3> normals(rest.size());
+  mesh::computeVertexNormals(rest, tris, normals);
+  // A poke as deep as 3% of the mesh's extent, at the top of the mesh.
+  const Bounds3 box = boundsOf(rest);
+  const float size = std::max({box.hi.x - box.lo.x, box.hi.y - box.lo.y, box.hi.z - box.lo.z});
+  std::vector<Float3> poked(rest.size()), bent(rest.size());
+  applyPoke(rest, normals, topVertex(rest), pokeFraction, 0.03f * size, poked);
+  applyGlobalBend(rest, 0.05f * size, bent);
+  MeshRefitBench b{
+      .vertices = rest.size(), .settings = settings, .maxNormalErrorRad = refit.maxNormalErrorRad};
+  b.repeats = repeats > 0 ? repeats : int(std::clamp<std::size_t>(2000000 / rest.size(), 5, 200));
+  b.meanNeighbourhood =
+      double(mesh::IncrementalPlaneFitter(rest, tris, settings).neighbourhoods().indices.size()) /
+      double(rest.size());
+  b.poke = compareRefits(rest, poked, tris, settings, b.repeats, refit);
+  b.bend = compareRefits(rest, bent, tris, settings, std::max(3, b.repeats / 4), refit);
+  return b;
+}
+
+std::string meshRefitBenchJson(const MeshRefitBench& b) {
+  nlohmann::json out = comparisonJson(b.poke, b.maxNormalErrorRad);
+  out.update({{"vertices", b.vertices},
+              {"radius_mm", b.settings.radiusMm()},
+              {"sigma_t_per_mm", b.settings.sigma_t},
+              {"epsilon", b.settings.epsilon},
+              {"mean_neighbourhood", b.meanNeighbourhood},
+              {"repeats", b.repeats},
+              {"global", comparisonJson(b.bend, b.maxNormalErrorRad)}});
+  return detail::jsonText(out);
+}
+
+std::string scenarioRefitJson(const ScenarioRefitStudy& s) {
+  nlohmann::json steps = nlohmann::json::object();
+  for (std::size_t k = 0; k < kRefitMotionStepsMm.size(); ++k)
+    steps[std::to_string(kRefitMotionStepsMm[k]) + "_mm"] = s.meanFractionBeyond[k];
+  return detail::jsonText(
+      {{"vertices", s.vertices},
+       {"frames", s.frames},
+       {"mean_changed_vertex_fraction", s.meanChangedVertexFraction},
+       {"mean_fraction_moving_per_frame_beyond", steps},
+       {"plane_tolerance_mm",
+        {{"p10", s.toleranceMmP10}, {"median", s.toleranceMmMedian}, {"p90", s.toleranceMmP90}}},
+       {"normals_ms_median", s.normalsMsMedian},
+       {"tangents_ms_median", s.tangentsMsMedian},
+       {"full_refit_ms_median", s.fullRefitMsMedian},
+       {"exact", seriesJson(s.exact)},
+       {"tolerant", seriesJson(s.tolerant)}});
 }
 
 }  // namespace tissue::studies

@@ -2,8 +2,6 @@
 // Monte Carlo (MCML's model), Jensen's dipole, the Donner-Jensen multipole or Christensen-Burley.
 #include <unistd.h>
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -48,94 +46,37 @@ Result<void> checkOptions(const ProfileOptions& o) {
   return {};
 }
 
-// One value per channel: a number for a single-wavelength medium, [R, G, B] for a material.
-nlohmann::json perChannel(const std::vector<studies::ChannelProfile>& ch,
-                          double studies::ChannelProfile::*field) {
-  if (ch.size() == 1) return ch[0].*field;
-  nlohmann::json a = nlohmann::json::array();
-  for (const auto& c : ch)
-    a.push_back(c.*field);
-  return a;
-}
-
 int runProfile(const ProfileOptions& o, const GlobalOptions& global) {
   if (auto ok = checkOptions(o); !ok) return fail("profile", ok.error().message);
   std::vector<optics::LayeredMedium> media;  // one per channel
-  nlohmann::json out;
-  out["method"] = o.method;
+  nlohmann::json source{{"method", o.method}};
   if (!o.medium.empty()) {
     auto m = optics::loadMediumFile(o.medium);
     if (!m) return fail("profile", m.error().message);
     media.push_back(*m);
-    out["medium"] = o.medium;
+    source["medium"] = o.medium;
   } else {
     auto mat = findNamedMaterial(o.material);
     if (!mat) return fail("profile", mat.error().message);
     for (int c = 0; c < optics::kChannels; ++c)
       media.push_back(optics::halfSpace(*mat, c));
-    out["material"] = mat->name;
-    out["channels"] = {"R", "G", "B"};
+    source.update({{"material", mat->name}, {"channels", {"R", "G", "B"}}});
   }
-  if (o.method != "mc" && media[0].layers.size() > 1)
-    std::cerr << "tissue-sim profile: warning: analytic methods use the first layer only\n";
-  if (o.method == "multipole" && studies::multipoleUnreliable(media[0]))
-    std::cerr
-        << "tissue-sim profile: warning: the slab is thinner than 1/sigma_t'; the multipole is unreliable\n";
-  double rMax = 0;
-  for (const auto& m : media)
-    rMax = std::max(rMax, studies::defaultProfileRadiusMm(m));
-  const optics::RadialGrid grid{.drMm = o.drMm > 0 ? o.drMm : rMax / o.bins, .bins = o.bins};
-
-  std::vector<studies::ChannelProfile> channels;
-  studies::ProfileConfig config;
-  config.method = *studies::parseProfileMethod(o.method);
-  config.photons = o.photons;
-  config.seed = o.seed;
-  config.threads = o.threads;
+  studies::ProfileStudyConfig config{.profile = {.method = *studies::parseProfileMethod(o.method),
+                                                 .photons = o.photons,
+                                                 .seed = o.seed,
+                                                 .threads = o.threads,
+                                                 .onProgress = {}},
+                                     .bins = o.bins,
+                                     .drMm = o.drMm};
   if (o.progress || (o.method == "mc" && isatty(STDERR_FILENO) && o.photons >= 1000000))
-    config.onProgress = drawProgress;
-  for (const auto& m : media) {
-    auto ch = studies::profileChannel(m, grid, config);
-    if (!ch) return fail("profile", ch.error().message);
-    channels.push_back(std::move(*ch));
-  }
-  out["Rd"] = perChannel(channels, &studies::ChannelProfile::rd);
-  out["Rd_stderr"] = perChannel(channels, &studies::ChannelProfile::rdStderr);
-  out["Tt"] = perChannel(channels, &studies::ChannelProfile::tt);
-  out["Tt_stderr"] = perChannel(channels, &studies::ChannelProfile::ttStderr);
-  out["specular"] = perChannel(channels, &studies::ChannelProfile::specular);
-  double seconds = 0;
-  for (const auto& c : channels)
-    seconds += c.seconds;
-  if (o.method == "mc") {
-    std::int64_t photons = 0;
-    for (const auto& c : channels)
-      photons += c.photons;
-    out["photons"] = photons;
-    out["threads"] = channels[0].threads;
-    out["seed"] = o.seed;
-    out["seconds"] = seconds;
-    out["photons_per_second"] = static_cast<double>(photons) / seconds;
-  } else {
-    out["profile_us"] = seconds * 1e6 / static_cast<double>(channels.size());  // one channel's radial profile
-  }
-  nlohmann::json radial;
-  radial["dr_mm"] = grid.drMm;
-  for (int i = 0; i < grid.bins; ++i)
-    radial["r_mm"].push_back(grid.radius(i));
-  if (channels.size() == 1) {
-    radial["Rd"] = channels[0].rdRadial;
-  } else {
-    for (const auto& c : channels)
-      radial["Rd"].push_back(c.rdRadial);
-  }
-  if (global.json) {
-    out["radial"] = radial;
-  } else {
-    out["radial_bins"] = grid.bins;
-    out["radial_dr_mm"] = grid.drMm;
-  }
-  out["units"] = "r in mm, radial Rd in mm^-2, Rd/Tt fractions of incident power (specular excluded)";
+    config.profile.onProgress = drawProgress;
+  auto study = studies::studyProfile(media, config);
+  if (!study) return fail("profile", study.error().message);
+  for (const auto& w : study->warnings)
+    std::cerr << "tissue-sim profile: warning: " << w << "\n";
+  auto out = nlohmann::json::parse(studies::profileStudyJson(*study, global.json));
+  out.update(source);
   printResult(global, out);
   return 0;
 }

@@ -56,6 +56,28 @@ struct KernelStudy {
 /// signals). Errors name the material and the kernel.
 Result<KernelStudy> studyKernels(const optics::ScatteringMaterial& material);
 
+/// One kernel of a material built as a renderer builds it (dipole profile, 2-D grid, model,
+/// taps), timed, with its errors against the ground truth: `tissue-sim kernel`.
+struct KernelMeasurement {
+  std::string material;
+  optics::SeparableKernel kernel{};
+  /// ms: wall and process CPU time (the build is single-threaded; CPU time is disturbed less by
+  /// load) of the second build; the first build of a process also pays for faulting in cold code
+  /// and memory, reported apart.
+  double buildMs = 0, buildCpuMs = 0, buildFirstMs = 0;
+  Rgb kernelRms{};  ///< over the (2h+1)^2 ground-truth grid normalised to 1
+  Rgb imageRms{};   ///< on the circle-and-squares signal in [0, 1], 256^2 pixels of gridCellMm
+  Rgb energy{};     ///< the kernel's 2-D sum per channel
+  double gridCellMm = 0, kernelHalfWidthMm = 0;
+};
+Result<KernelMeasurement> measureKernel(const optics::ScatteringMaterial& material, optics::KernelModel model,
+                                        const optics::KernelSettings& settings);
+
+/// The measurement as `tissue-sim kernel` prints it: material, model, rank, taps ([w_R, w_G,
+/// w_B, offset_mm]), components (rank > 1), build_ms, build_cpu_ms, build_first_ms, kernel_rms,
+/// image_rms, energy, grid_cell_mm, kernel_half_width_mm, units; JSON text.
+std::string kernelMeasurementJson(const KernelMeasurement& m);
+
 /// The sum of the three channels.
 inline double sum(const Rgb& v) {
   return v[0] + v[1] + v[2];

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -61,5 +62,30 @@ bool multipoleUnreliable(const optics::LayeredMedium& medium);
 /// path 1/sigma_t' scaled by the searchlight/mfp fit.
 Result<ChannelProfile> profileChannel(const optics::LayeredMedium& medium, const optics::RadialGrid& grid,
                                       const ProfileConfig& config);
+
+/// A profile per channel (one medium per wavelength) on one grid: `tissue-sim profile`.
+struct ProfileStudyConfig {
+  ProfileConfig profile;
+  int bins = 100;     ///< rings
+  double drMm = 0.0;  ///< ring width, mm; 0: defaultProfileRadiusMm (the largest of the media) / bins
+};
+
+struct ProfileStudy {
+  ProfileMethod method = ProfileMethod::Dipole;
+  std::uint64_t seed = 0;  ///< Monte Carlo seed
+  optics::RadialGrid grid{};
+  std::vector<ChannelProfile> channels{};  ///< one per medium
+  std::vector<std::string> warnings{};     ///< e.g. an analytic method on a layered medium
+};
+
+/// Profiles each of `media` (e.g. a material's three channels) on one grid.
+Result<ProfileStudy> studyProfile(const std::vector<optics::LayeredMedium>& media,
+                                  const ProfileStudyConfig& config);
+
+/// The study as JSON text: Rd, Rd_stderr, Tt, Tt_stderr and specular (a number for one channel,
+/// [R, G, B] for three); Monte Carlo: photons, threads, seed, seconds, photons_per_second; else
+/// profile_us (one channel's radial profile, us); with `radial` the rings ("radial": dr_mm, r_mm,
+/// Rd), else only radial_bins and radial_dr_mm; units.
+std::string profileStudyJson(const ProfileStudy& study, bool radial);
 
 }  // namespace tissue::studies

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "tissue/core/result.h"
@@ -72,5 +73,32 @@ Result<ScenarioRefitStudy> studyRefitUnderScenario(const scenario::Scenario& sce
                                                    const SurfaceMesh& mesh,
                                                    const mesh::PlaneFitSettings& settings,
                                                    double maxNormalErrorRad, int frames);
+
+/// `tissue-sim refit-bench --mesh`: compareRefits after a local poke (the `pokeFraction` of the
+/// vertices nearest the top pushed in by 3% of the mesh's extent) and after a global bend (5%).
+struct MeshRefitBench {
+  std::size_t vertices = 0;
+  mesh::PlaneFitSettings settings;
+  double meanNeighbourhood = 0;  ///< vertices per neighbourhood sphere; hundreds: is the mesh in mm?
+  int repeats = 0;               ///< of the poke; the bend max(3, repeats / 4)
+  RefitComparison poke{}, bend{};
+  double maxNormalErrorRad = 0;  ///< rad, the tolerant re-fit's bound
+};
+/// `repeats` 0: 2e6 / vertices, clamped to 5..200.
+/// `rest` and `triangles`: the mesh's geometric vertices (mesh::geometricPositionsOf), mm.
+MeshRefitBench benchRefitOnMesh(std::span<const Float3> rest, std::span<const Triangle> triangles,
+                                const mesh::PlaneFitSettings& settings, double pokeFraction, int repeats,
+                                const mesh::PlaneRefitSettings& refit);
+
+/// As JSON text: the poke's comparison at the top level (moved_fraction, refitted_fraction,
+/// full_refit_ms, incremental_refit_ms, speedup, max_normal_deviation_rad,
+/// max_offset_deviation_mm, tolerant), the bend's as "global", and vertices, radius_mm,
+/// sigma_t_per_mm, epsilon, mean_neighbourhood, repeats.
+std::string meshRefitBenchJson(const MeshRefitBench& bench);
+
+/// The scenario study as JSON text: vertices, frames, mean_changed_vertex_fraction,
+/// mean_fraction_moving_per_frame_beyond, plane_tolerance_mm, normals_ms_median,
+/// tangents_ms_median, full_refit_ms_median, exact, tolerant.
+std::string scenarioRefitJson(const ScenarioRefitStudy& study);
 
 }  // namespace tissue::studies
