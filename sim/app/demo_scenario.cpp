@@ -15,6 +15,7 @@
 #include "output.h"
 #include "pass_timings_json.h"
 #include "tissue/core/atomic_file.h"
+#include "tissue/core/image.h"
 #include "tissue/core/statistics.h"
 #include "tissue/core/stopwatch.h"
 #include "tissue/inspect/vtk_export.h"
@@ -22,6 +23,7 @@
 #include "tissue/scenario/scenario_run.h"
 #include "tissue/scene/organ_loop.h"
 #include "tissue/scene/session.h"
+#include "tissue/scene/surface_inspection.h"
 
 namespace tissue::sim_app {
 namespace {
@@ -79,30 +81,6 @@ std::string markdownReport(const nlohmann::json& r) {
   return md.str();
 }
 
-#if TISSUE_WITH_VTK
-/// Writes the surface with normals, tangents, planes (eq. 14) and displacement as a .vtp file.
-Result<void> writeInspection(const mesh::DeformableSurface& surface, const std::filesystem::path& path) {
-  const auto& m = surface.mesh();
-  std::vector<Float3> planeNormal(m.positions.size());
-  std::vector<float> planeOffset(m.positions.size()), displacement(m.positions.size());
-  const auto rest = surface.geometricRestPositions();
-  for (std::size_t i = 0; i < m.positions.size(); ++i) {
-    const auto& p = surface.planes()[i];
-    planeNormal[i] = {p.x, p.y, p.z};
-    planeOffset[i] = p.w;
-    const Float3 r = rest[m.geometricIndex[i]], q = m.positions[i];
-    displacement[i] =
-        std::sqrt((q.x - r.x) * (q.x - r.x) + (q.y - r.y) * (q.y - r.y) + (q.z - r.z) * (q.z - r.z));
-  }
-  return inspect::writeVtp(path, m.positions, m.triangles,
-                           {inspect::fieldOf<Float3>("normal", surface.normals()),
-                            inspect::fieldOf<Float4>("tangent_handedness", surface.tangents()),
-                            inspect::fieldOf<Float3>("plane_normal", std::span<const Float3>(planeNormal)),
-                            {"plane_offset_mm", 1, planeOffset},
-                            {"displacement_mm", 1, displacement}});
-}
-#endif
-
 /// The demo's scenes on one headless context: the loop's (the scenario's organ, drawn as a
 /// trainee's frame) and the snapshots' (the same organ static, 4x MSAA, every method).
 struct DemoSetup {
@@ -147,33 +125,19 @@ Result<DemoSetup> setUp(const DemoOptions& o, nlohmann::json& report) {
   return d;
 }
 
-/// The images in `files` (equal sizes) tiled `columns` per row, each shrunk `shrink` times (a
-/// box filter), into `png`. Returns the file name and the panels, or why it was skipped.
+/// The images in `files` tiled `columns` per row, each shrunk `shrink` times, into `png`.
+/// Returns the file name and the panels, or why it was skipped.
 nlohmann::json writeMontage(const std::filesystem::path& dir, const std::vector<std::string>& files,
                             const std::string& png, int columns, int shrink) {
   std::vector<Image8> images;
   for (const auto& f : files) {
     auto image = readImage(dir / f, 4);
     if (!image) return {{"skipped", f + ": " + image.error().message}};
-    if (!images.empty() && (image->width != images[0].width || image->height != images[0].height))
-      return {{"skipped", f + " has another size than " + files[0]}};
     images.push_back(std::move(*image));
   }
-  if (images.empty()) return {{"skipped", "no images"}};
-  const int w = images[0].width / shrink, h = images[0].height / shrink, n = int(images.size());
-  Image8 tiled(std::min(columns, n) * w, (n + columns - 1) / columns * h, 4);
-  for (int i = 0; i < n; ++i)
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x)
-        for (int c = 0; c < 4; ++c) {
-          int sum = 0;
-          for (int dy = 0; dy < shrink; ++dy)
-            for (int dx = 0; dx < shrink; ++dx)
-              sum += images[i].at(shrink * x + dx, shrink * y + dy)[c];
-          tiled.at(i % columns * w + x, i / columns * h + y)[c] =
-              std::uint8_t((sum + shrink * shrink / 2) / (shrink * shrink));
-        }
-  if (auto r = writePng(dir / png, tiled); !r) return {{"skipped", r.error().message}};
+  auto tiled = tileImages(images, columns, shrink);
+  if (!tiled) return {{"skipped", tiled.error().message}};
+  if (auto r = writePng(dir / png, *tiled); !r) return {{"skipped", r.error().message}};
   return {{"image", png}, {"panels", files}};
 }
 
@@ -306,13 +270,13 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
 
   // Inspection: the poked organ with its shading fields, for ParaView (a VTK export: a build
   // without VTK, TISSUE_WITH_VTK=OFF, writes none and says so in the report).
-#if TISSUE_WITH_VTK
-  if (auto vtp = writeInspection(*d.surface, o.outDir / "organ_poked.vtp"); !vtp) return vtp.error();
-  report["inspection"] = "organ_poked.vtp";
-#else
-  report["inspection"] = nullptr;
-  report["inspection_skipped"] = "built without VTK (TISSUE_WITH_VTK=OFF): no organ_poked.vtp";
-#endif
+  if (inspect::builtWithVtk()) {
+    if (auto vtp = scene::writeSurfaceVtp(*d.surface, o.outDir / "organ_poked.vtp"); !vtp) return vtp.error();
+    report["inspection"] = "organ_poked.vtp";
+  } else {
+    report["inspection"] = nullptr;
+    report["inspection_skipped"] = "built without VTK (TISSUE_WITH_VTK=OFF): no organ_poked.vtp";
+  }
 
   const scenario::ScenarioRun& run = organLoop.run();
   report["mesh"] = run.scenario().mesh.string();

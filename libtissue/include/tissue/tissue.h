@@ -72,6 +72,7 @@
 #include "tissue/scene/organ_methods.h"
 #include "tissue/scene/scene.h"
 #include "tissue/scene/session.h"
+#include "tissue/scene/surface_inspection.h"
 
 // Inspection: .vtp exports and charts (an Error when tissue was built without VTK).
 #include "tissue/inspect/chart.h"

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <vector>
 
 #include "tissue/core/result.h"
@@ -34,5 +35,10 @@ Result<Image8> readImage(const std::filesystem::path& path, int forceChannels = 
 
 /// Flips rows in place (GL reads bottom-up).
 void flipVertically(Image8& image);
+
+/// `images` (equal sizes and channel counts) tiled `columns` a row, left to right and top to
+/// bottom, each shrunk `shrink` times by a box filter (1: full size), for contact sheets of
+/// frames or methods. Errors on none, mismatched sizes, columns < 1 or shrink < 1.
+Result<Image8> tileImages(std::span<const Image8> images, int columns, int shrink = 1);
 
 }  // namespace tissue

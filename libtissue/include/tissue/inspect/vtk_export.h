@@ -29,6 +29,10 @@ VertexField fieldOf(std::string name, std::span<const T> data) {
                                  data.size() * sizeof(T) / sizeof(float))};
 }
 
+/// Whether the library was built with VTK (TISSUE_WITH_VTK); without it every export and chart
+/// is one Error saying so.
+bool builtWithVtk();
+
 /// Writes a triangle mesh with per-vertex fields to `path` (.vtp), atomically.
 /// \param positions  #V positions, mm
 /// \param triangles  #F triangles
