@@ -116,6 +116,8 @@ std::string Simulator::tryFrame(Integrator integrator, int substeps, double ener
     Stopwatch integrate;
     const StepStats stats = step(integrator, m_system, m_state, h, m_workspace, m_config.solver);
     report.cgIterations += stats.cgIterations;
+    report.stepsRun += 1;
+    report.solverIterations += stats.cgIterations + stats.localGlobalIterations;
     report.integrateMs += integrate.elapsedMs();
     report.factorMs += stats.factorMs;
     report.refactored = report.refactored || stats.refactored;
@@ -225,6 +227,11 @@ FrameReport Simulator::advanceFrame() {
   relaxRecovery(report.events.empty());
   ++m_frame;
   return report;
+}
+
+FrameWorkBound Simulator::frameWorkBound() const {
+  const int perStep = std::max({m_config.solver.maxIterations, m_config.solver.localGlobalIterations, 1});
+  return {.steps = 2 * m_substeps, .solverIterations = 2 * m_substeps * perStep};
 }
 
 double Simulator::hookElasticChange() {
