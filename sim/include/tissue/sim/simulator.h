@@ -45,7 +45,10 @@ struct RecoveryConfig {
   double frameBudgetMs = 16.0;
   /// After this many frames without divergence a replaced integrator is replaced back by the
   /// configured one (a transient, such as a tool backing off compressed tissue, then costs a few
-  /// frames instead of every later frame). 0 keeps the fallback for good.
+  /// frames instead of every later frame). 0 keeps the fallback for good. When the configured
+  /// integrator diverges again within this many frames of coming back (it is unstable for the
+  /// system, not hit by a transient: explicit Euler at h far above 2/omega), the wait doubles,
+  /// up to 64 times this, so that a hopeless setting costs a retry ever more rarely.
   int relaxAfterFrames = 10;
 };
 
@@ -143,7 +146,9 @@ class Simulator {
   SimulatorConfig m_config;
   Integrator m_integrator;
   int m_substeps;
-  int m_quietFrames = 0;  ///< frames since the last divergence event
+  int m_quietFrames = 0;   ///< frames since the last divergence event
+  int m_backoff = 1;       ///< relaxAfterFrames multiplier: doubled each time a restore fails
+  long m_restoredAt = -1;  ///< frame at which the configured integrator was last restored
   long m_frame = 0;
   double m_energyFloor = 0.0;
   StepWorkspace m_workspace;
