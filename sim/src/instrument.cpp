@@ -34,6 +34,7 @@ Result<void> checkConfig(const InstrumentConfig& c) {
   if (!(c.graspMarginMm >= 0.0) || !std::isfinite(c.graspMarginMm))
     return Error{"instrument: the grasp margin must be >= 0 mm"};
   if (c.contactIterations < 1) return Error{"instrument: contactIterations must be >= 1"};
+  if (c.maxSubMoves < 1) return Error{"instrument: maxSubMoves must be >= 1"};
   if (!(c.contactToleranceFraction > 0.0) || !std::isfinite(c.contactToleranceFraction))
     return Error{"instrument: contactToleranceFraction must be a positive fraction of the radius"};
   return {};
@@ -198,6 +199,7 @@ InstrumentFrameReport Instrument::lastFrame() const {
   r.maxContactDepthMm = m_maxDepth;
   r.grasped = static_cast<std::uint32_t>(m_grasped.size());
   r.subMoves = m_subMoves;
+  r.teleports = m_teleports;
   r.pose = m_pose;
   return r;
 }
@@ -213,6 +215,7 @@ void Instrument::restartFrame() {
   m_time = 0.0;
   m_lastContacts = 0;
   m_subMoves = 0;
+  m_teleports = 0;
   m_maxDepth = 0.0;
   m_samples.clear();
 }
@@ -232,8 +235,11 @@ void Instrument::afterSubstep(const MassSpringSystem& system, State& state, cons
   const double sweep =
       length(to.position - from.position) +
       (m_config.shape.kind == ToolShapeKind::Capsule ? 0.5 * m_config.shape.length * angle : 0.0);
+  // In double, then capped: a sweep of 1e12 mm must neither overflow int nor cost 1e12 passes.
+  const double wanted = std::ceil(sweep / (m_config.maxSubMoveFraction * m_config.shape.radius));
   const int moves =
-      std::max(1, static_cast<int>(std::ceil(sweep / (m_config.maxSubMoveFraction * m_config.shape.radius))));
+      wanted <= m_config.maxSubMoves ? std::max(1, static_cast<int>(wanted)) : m_config.maxSubMoves;
+  if (!(wanted <= m_config.maxSubMoves)) ++m_teleports;
   const double dt = info.h / moves;
   const Vec3d impulseBefore = m_impulse, graspBefore = m_graspImpulse;
   // First the vertices' own step against the tool where the integrator saw it (simulated

@@ -116,6 +116,8 @@ std::string Simulator::tryFrame(Integrator integrator, int substeps, double ener
     Stopwatch integrate;
     const StepStats stats = step(integrator, m_system, m_state, h, m_workspace, m_config.solver);
     report.cgIterations += stats.cgIterations;
+    report.stepsRun += 1;
+    report.solverIterations += stats.cgIterations + stats.localGlobalIterations;
     report.integrateMs += integrate.elapsedMs();
     report.factorMs += stats.factorMs;
     report.refactored = report.refactored || stats.refactored;
@@ -227,6 +229,11 @@ FrameReport Simulator::advanceFrame() {
   return report;
 }
 
+FrameWorkBound Simulator::frameWorkBound() const {
+  const int perStep = std::max({m_config.solver.maxIterations, m_config.solver.localGlobalIterations, 1});
+  return {.steps = 2 * m_substeps, .solverIterations = 2 * m_substeps * perStep};
+}
+
 double Simulator::hookElasticChange() {
   const SpringNetwork& s = m_system.springs;
   m_springMarks.resize(s.size(), 0);
@@ -252,11 +259,23 @@ double Simulator::hookElasticChange() {
 void Simulator::relaxRecovery(bool quietFrame) {
   m_quietFrames = quietFrame ? m_quietFrames + 1 : 0;
   const int after = m_config.recovery.relaxAfterFrames;
-  if (after <= 0 || m_quietFrames < after) return;
+  if (after <= 0) return;
+  if (m_restoredAt >= 0 && m_frame - m_restoredAt < after) {
+    // The restored integrator diverged again soon: unstable for this system, not a transient.
+    if (!quietFrame) {
+      m_backoff = std::min(2 * m_backoff, 64);
+      m_restoredAt = -1;
+    }
+  } else if (m_restoredAt >= 0) {
+    m_backoff = 1;  // it held for `after` frames: the divergence was a transient after all
+    m_restoredAt = -1;
+  }
+  if (m_integrator == m_config.integrator || m_quietFrames < after * m_backoff) return;
   // A fallback integrator is replaced back by the configured one after quiet frames; should the
   // transient return, the next divergence costs one bounded retry again.
   m_integrator = m_config.integrator;
   m_quietFrames = 0;
+  m_restoredAt = m_frame;
 }
 
 }  // namespace tissue::sim

@@ -44,6 +44,7 @@ TEST(MonteCarlo, CaseAMatchedSlabMatchesVanDeHulst) {
   expectWithin3Sigma("Rd", r.rd, r.rdStderr, 0.09739, 0.0);  // van de Hulst 1980, exact
   expectWithin3Sigma("Tt", r.tt, r.ttStderr, 0.66096, 0.0);
   EXPECT_EQ(r.specular, 0.0);
+  EXPECT_EQ(r.cappedPhotons, 0);  // every photon ends as MCML's do: the hop cap changes nothing
   // Conservation: every launched weight is reflected, transmitted or absorbed.
   EXPECT_NEAR(r.rd + r.tt + r.absorbed[0], 1.0, 1e-5);  // roulette conserves weight on average
 }
@@ -55,6 +56,7 @@ TEST(MonteCarlo, CaseBHalfSpaceMatchesGiovanelli) {
   // Giovanelli 1955: total 0.2600 with the 0.04 specular, quoted to 4 digits (+-5e-5 rounding).
   expectWithin3Sigma("Rd", r.rd, r.rdStderr, 0.2200, 5e-5);
   EXPECT_EQ(r.tt, 0.0);
+  EXPECT_EQ(r.cappedPhotons, 0);  // every photon ends as MCML's do: the hop cap changes nothing
 }
 
 TEST(MonteCarlo, CaseCMismatchedSlabMatchesMcml) {
@@ -81,6 +83,7 @@ TEST(MonteCarlo, CaseDThreeLayersMatchesMcml) {
   for (int l = 0; l < 3; ++l)
     EXPECT_NEAR(r.absorbed[static_cast<std::size_t>(l)], absorbedRef[l], 0.002);
   EXPECT_NEAR(r.specular + r.rd + r.tt + r.absorbed[0] + r.absorbed[1] + r.absorbed[2], 1.0, 1e-5);
+  EXPECT_EQ(r.cappedPhotons, 0);
 }
 
 TEST(MonteCarlo, RadialProfileIntegratesToTheTotal) {
@@ -122,6 +125,28 @@ TEST(MonteCarlo, SameSeedGivesIdenticalResultsForAnyThreadCount) {
   EXPECT_EQ(a->ttRadial, c->ttRadial);
   EXPECT_EQ(a->absorbed, c->absorbed);
   EXPECT_NE(a->rd, d->rd);
+}
+
+TEST(MonteCarlo, NonAbsorbingHalfSpaceEndsWithCappedPhotonsCounted) {
+  // mua = 0: a photon ends only by escaping, and the escape time of a random walk has an infinite
+  // mean; issue 14 saw this run without end. The hop cap drops the rare long walks and counts them.
+  MonteCarloSettings s;
+  s.photons = 2000;
+  s.maxInteractions = 10000;
+  s.grid = {.drMm = 0.1, .bins = 50};
+  auto r = simulateMonteCarlo(slab(1.4, 0.0, 10.0, 0.9, kInfiniteThickness), s);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  std::printf("  mua = 0: %lld of %lld photons capped at %lld hops, weight %.4f, Rd %.4f\n",
+              static_cast<long long>(r->cappedPhotons), static_cast<long long>(r->photons),
+              static_cast<long long>(s.maxInteractions), r->cappedWeight, r->rd);
+  // P(N > n) ~ n^-1/2 for the escape time: some photons of 2000 walk beyond 1e4 hops.
+  EXPECT_GT(r->cappedPhotons, 0);
+  EXPECT_LT(r->cappedPhotons, r->photons / 10);
+  EXPECT_EQ(r->absorbed[0], 0.0);
+  // Nothing is absorbed and nothing roulettes: what is not reflected is exactly the capped weight.
+  EXPECT_NEAR(r->specular + r->rd + r->cappedWeight, 1.0, 1e-9);
+  s.maxInteractions = 0;
+  EXPECT_FALSE(simulateMonteCarlo(slab(1.4, 0.0, 10.0, 0.9, kInfiniteThickness), s).ok());
 }
 
 TEST(MonteCarlo, RejectsBadSettingsAndMedia) {

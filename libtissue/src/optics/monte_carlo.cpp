@@ -32,6 +32,7 @@ Result<void> validateSettings(const MonteCarloSettings& s) {
   if (s.threads < 0) return Error{"Monte Carlo: threads must be >= 0 (0: all cores)"};
   if (!(s.grid.drMm > 0.0) || s.grid.bins < 1)
     return Error{"Monte Carlo: radial grid needs dr > 0 mm and bins >= 1"};
+  if (s.maxInteractions < 1) return Error{"Monte Carlo: maxInteractions must be >= 1 hop per photon"};
   return {};
 }
 
@@ -56,8 +57,9 @@ Result<void> runBatches(const LayeredMedium& medium, const MonteCarloSettings& s
   std::atomic<std::int64_t> progress{0};
   auto worker = [&] {
     for (int b = nextBatch.fetch_add(1); b < settings.batches; b = nextBatch.fetch_add(1)) {
-      tallies[static_cast<std::size_t>(b)] = detail::runPhotonBatch(
-          medium, settings.grid, perBatch, settings.seed, static_cast<std::uint64_t>(b), progress);
+      tallies[static_cast<std::size_t>(b)] =
+          detail::runPhotonBatch(medium, settings.grid, perBatch, settings.maxInteractions, settings.seed,
+                                 static_cast<std::uint64_t>(b), progress);
       finished.fetch_add(1);
     }
   };
@@ -111,6 +113,8 @@ Result<MonteCarloResult> simulateMonteCarlo(const LayeredMedium& medium, const M
   for (const auto& t : tallies) {
     rdBatch.push_back(t.rd / static_cast<double>(perBatch));
     ttBatch.push_back(t.tt / static_cast<double>(perBatch));
+    out.cappedPhotons += t.capped;
+    out.cappedWeight += t.cappedWeight / n;
     for (std::size_t l = 0; l < t.absorbed.size(); ++l)
       out.absorbed[l] += t.absorbed[l] / n;
     for (std::size_t i = 0; i < bins; ++i) {

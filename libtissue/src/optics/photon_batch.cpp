@@ -62,8 +62,13 @@ class BatchRunner {
     m_tally.ttRing.assign(static_cast<std::size_t>(grid.bins), 0.0);
   }
 
-  void run(Photon p) {
-    while (p.alive) {
+  void run(Photon p, std::int64_t maxInteractions) {
+    for (std::int64_t hops = 0; p.alive; ++hops) {
+      if (hops == maxInteractions) {
+        ++m_tally.capped;
+        m_tally.cappedWeight += p.w;
+        return;
+      }
       step(p);
       if (p.alive && p.w < kWeightThreshold) roulette(p);
     }
@@ -154,14 +159,15 @@ class BatchRunner {
 }  // namespace
 
 BatchTally runPhotonBatch(const LayeredMedium& medium, const RadialGrid& grid, std::int64_t photons,
-                          std::uint64_t seed, std::uint64_t stream, std::atomic<std::int64_t>& progress) {
+                          std::int64_t maxInteractions, std::uint64_t seed, std::uint64_t stream,
+                          std::atomic<std::int64_t>& progress) {
   BatchRunner runner(medium, grid, seed, stream);
   const double launchWeight = 1.0 - specularReflectance(medium);
   constexpr std::int64_t kProgressChunk = 1024;
   for (std::int64_t i = 0; i < photons; ++i) {
     Photon p;
     p.w = launchWeight;
-    runner.run(p);
+    runner.run(p, maxInteractions);
     if ((i + 1) % kProgressChunk == 0) progress.fetch_add(kProgressChunk, std::memory_order_relaxed);
   }
   progress.fetch_add(photons % kProgressChunk, std::memory_order_relaxed);

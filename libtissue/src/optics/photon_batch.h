@@ -16,11 +16,15 @@ struct BatchTally {
   std::vector<double> absorbed;  ///< weight absorbed per layer
   std::vector<double> rdRing;    ///< reflected weight per ring
   std::vector<double> ttRing;    ///< transmitted weight per ring
+  std::int64_t capped = 0;       ///< photons dropped at the hop cap
+  double cappedWeight = 0.0;     ///< their weight
 };
 
 /// Runs `photons` photons through the validated `medium` with the stream (seed, stream), adding
-/// to `progress` every 1024 photons.
+/// to `progress` every 1024 photons. A photon still alive after `maxInteractions` hops is
+/// dropped and counted in `capped`.
 BatchTally runPhotonBatch(const LayeredMedium& medium, const RadialGrid& grid, std::int64_t photons,
-                          std::uint64_t seed, std::uint64_t stream, std::atomic<std::int64_t>& progress);
+                          std::int64_t maxInteractions, std::uint64_t seed, std::uint64_t stream,
+                          std::atomic<std::int64_t>& progress);
 
 }  // namespace tissue::optics::detail

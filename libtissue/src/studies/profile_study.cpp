@@ -28,7 +28,8 @@ double timeEvaluation(F&& evaluate) {
 }
 
 // One value per channel: a number for a single-wavelength medium, [R, G, B] for a material.
-nlohmann::json perChannel(const std::vector<ChannelProfile>& ch, double ChannelProfile::*field) {
+template <class T>
+nlohmann::json perChannel(const std::vector<ChannelProfile>& ch, T ChannelProfile::*field) {
   if (ch.size() == 1) return ch[0].*field;
   nlohmann::json a = nlohmann::json::array();
   for (const auto& c : ch)
@@ -76,8 +77,8 @@ Result<ChannelProfile> profileChannel(const optics::LayeredMedium& medium, const
     s.onProgress = config.onProgress;
     auto r = optics::simulateMonteCarlo(medium, s);
     if (!r) return r.error();
-    return ChannelProfile{r->rd,       r->rdStderr, r->tt,      r->ttStderr, r->specular,
-                          r->rdRadial, r->seconds,  r->photons, r->threads};
+    return ChannelProfile{r->rd,      r->rdStderr, r->tt,      r->ttStderr,      r->specular,    r->rdRadial,
+                          r->seconds, r->photons,  r->threads, r->cappedPhotons, r->cappedWeight};
   }
   const auto a = analyticLayer(medium);
   const double r0 = (medium.ambientAbove - medium.layers[0].n) / (medium.ambientAbove + medium.layers[0].n);
@@ -144,6 +145,8 @@ std::string profileStudyJson(const ProfileStudy& s, bool radial) {
     seconds += c.seconds, photons += c.photons;
   if (s.method == ProfileMethod::MonteCarlo)
     out.update({{"photons", photons},
+                {"capped_photons", perChannel(ch, &ChannelProfile::cappedPhotons)},
+                {"capped_weight", perChannel(ch, &ChannelProfile::cappedWeight)},
                 {"threads", ch[0].threads},
                 {"seed", s.seed},
                 {"seconds", seconds},

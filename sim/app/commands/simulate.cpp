@@ -106,6 +106,13 @@ int runSimulate(const SimulateOptions& o, const GlobalOptions& global) {
     frames.push_back(*m);
   }
   nlohmann::json summary = summaryJson(**run, scenario::summarize(frames), frames, wall.elapsedMs());
+  // Each frame's work, counted (issue 14): the worst frame against the simulator's stated bound.
+  const scenario::RunSummary work = scenario::summarize(frames);
+  summary["max_frame_steps"] = work.maxFrameSteps;
+  summary["max_frame_solver_iterations"] = work.maxFrameSolverIterations;
+  summary["frame_work_bound"] = {{"steps", (*run)->frameWorkBound().steps},
+                                 {"solver_iterations", (*run)->frameWorkBound().solverIterations}};
+  summary["tool_teleports"] = work.teleports;
   if (auto ok = writeTextFileAtomic(out / "frames.csv", scenario::framesCsv(frames)); !ok)
     return fail("simulate", ok.error().message);
   summary["frames_csv"] = (out / "frames.csv").string();

@@ -105,6 +105,8 @@ Result<FrameMetrics> ScenarioRun::advance() {
   m.factorMs = report.factorMs;
   m.degrade = report.degrade;
   m.recoveryMs = report.recoveryMs;
+  m.stepsRun = report.stepsRun;
+  m.solverIterations = report.solverIterations;
   if (m_instrument) {
     auto tool = m_instrument->lastFrame();
     m.forceN = tool.forceN;
@@ -113,6 +115,8 @@ Result<FrameMetrics> ScenarioRun::advance() {
     m.contactDepthMm = tool.maxContactDepthMm;
     m.forceSamplesN = std::move(tool.forceSamplesN);
     m.sampleIntervalS = tool.sampleIntervalS;
+    m.toolSubMoves = tool.subMoves;
+    m.teleports = tool.teleports;
   }
   m.forceMagnitudeN = sim::length(m.forceN);
   m.maxStretch = sim::maxStretch(system, state.x);
@@ -131,6 +135,9 @@ RunSummary summarize(const std::vector<FrameMetrics>& frames) {
     if (std::isfinite(f.forceMagnitudeN)) s.maxForceN = std::max(s.maxForceN, f.forceMagnitudeN);
     if (!f.degrade.empty()) ++s.degradedFrames;
     s.maxFactorMs = std::max(s.maxFactorMs, f.factorMs);
+    s.maxFrameSteps = std::max(s.maxFrameSteps, f.stepsRun);
+    s.maxFrameSolverIterations = std::max(s.maxFrameSolverIterations, f.solverIterations);
+    s.teleports += f.teleports;
     s.meanForceN += f.forceMagnitudeN;
     s.divergenceEvents += f.divergenceEvents;
     s.meanIntegrateMs += f.integrateMs;

@@ -36,6 +36,12 @@ struct MonteCarloSettings {
   int batches = 20;               ///< independent batches for the standard errors (>= 2)
   int threads = 0;                ///< worker threads; 0: std::thread::hardware_concurrency()
   RadialGrid grid;                ///< radial scoring
+  /// Hops (interactions and boundary hits) one photon may take before it is dropped. Without
+  /// absorption (mua = 0) a photon in a half space ends only by escaping, and the time to escape
+  /// of a random walk has an infinite mean (P(N > n) ~ n^-1/2), so one photon may run for hours.
+  /// A dropped photon's weight is counted in cappedWeight, not in rd, tt or absorbed; photons
+  /// that end normally (MCML's cases: thousands of hops at most) are unaffected.
+  std::int64_t maxInteractions = 100000;
   /// Called on the calling thread about ten times a second with the fraction done in [0, 1];
   /// empty: no progress reports. The library never writes to stderr itself.
   std::function<void(double)> onProgress;
@@ -43,18 +49,20 @@ struct MonteCarloSettings {
 
 /// Tallies normalised per launched photon. The specular reflection is not in rd.
 struct MonteCarloResult {
-  double rd = 0.0;               ///< diffuse reflectance (MCML's Rd), fraction of photons
-  double rdStderr = 0.0;         ///< standard error of rd from the batch spread
-  double tt = 0.0;               ///< total transmittance, unscattered included
-  double ttStderr = 0.0;         ///< standard error of tt
-  double specular = 0.0;         ///< specular reflectance at the entry surface
-  std::vector<double> absorbed;  ///< fraction absorbed per layer
-  std::vector<double> radiusMm;  ///< representative radius per ring, mm
-  std::vector<double> rdRadial;  ///< R_d(r) per ring, mm^-2
-  std::vector<double> ttRadial;  ///< T(r) per ring, mm^-2 (zeros when the last layer is infinite)
-  std::int64_t photons = 0;      ///< photons launched
-  int threads = 1;               ///< worker threads used
-  double seconds = 0.0;          ///< wall-clock time of the run, s
+  double rd = 0.0;                 ///< diffuse reflectance (MCML's Rd), fraction of photons
+  double rdStderr = 0.0;           ///< standard error of rd from the batch spread
+  double tt = 0.0;                 ///< total transmittance, unscattered included
+  double ttStderr = 0.0;           ///< standard error of tt
+  double specular = 0.0;           ///< specular reflectance at the entry surface
+  std::vector<double> absorbed;    ///< fraction absorbed per layer
+  std::vector<double> radiusMm;    ///< representative radius per ring, mm
+  std::vector<double> rdRadial;    ///< R_d(r) per ring, mm^-2
+  std::vector<double> ttRadial;    ///< T(r) per ring, mm^-2 (zeros when the last layer is infinite)
+  std::int64_t photons = 0;        ///< photons launched
+  std::int64_t cappedPhotons = 0;  ///< photons dropped at maxInteractions hops
+  double cappedWeight = 0.0;  ///< their weight, fraction of launched photons (rd + tt + absorbed + this = 1)
+  int threads = 1;            ///< worker threads used
+  double seconds = 0.0;       ///< wall-clock time of the run, s
 };
 
 /// Runs the simulation. Errors: an invalid medium or settings. Never throws.

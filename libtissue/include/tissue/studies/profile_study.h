@@ -33,13 +33,15 @@ struct ProfileConfig {
 
 /// One wavelength's profile and totals.
 struct ChannelProfile {
-  double rd = 0, rdStderr = 0;   ///< total diffuse reflectance (standard error: Monte Carlo only)
-  double tt = 0, ttStderr = 0;   ///< total transmittance (multipole and Monte Carlo; else 0)
-  double specular = 0;           ///< Fresnel reflectance at normal incidence (not in rd)
-  std::vector<double> rdRadial;  ///< mm^-2, per ring of the grid
-  double seconds = 0;            ///< s, Monte Carlo: the run; analytic: one evaluation of the profile
-  std::int64_t photons = 0;      ///< Monte Carlo: photons launched
-  int threads = 0;               ///< Monte Carlo: worker threads used
+  double rd = 0, rdStderr = 0;     ///< total diffuse reflectance (standard error: Monte Carlo only)
+  double tt = 0, ttStderr = 0;     ///< total transmittance (multipole and Monte Carlo; else 0)
+  double specular = 0;             ///< Fresnel reflectance at normal incidence (not in rd)
+  std::vector<double> rdRadial;    ///< mm^-2, per ring of the grid
+  double seconds = 0;              ///< s, Monte Carlo: the run; analytic: one evaluation of the profile
+  std::int64_t photons = 0;        ///< Monte Carlo: photons launched
+  int threads = 0;                 ///< Monte Carlo: worker threads used
+  std::int64_t cappedPhotons = 0;  ///< Monte Carlo: photons dropped at the hop cap (none absorb them)
+  double cappedWeight = 0;         ///< Monte Carlo: their weight, fraction of launched photons
 };
 
 /// The first layer as the analytic models see it: reduced coefficients (mm^-1), the relative

@@ -61,6 +61,11 @@ struct InstrumentConfig {
   /// Embedded surface only: the passes stop once no contact is deeper than this fraction of
   /// the radius inside the tool (unitless, > 0).
   double contactToleranceFraction = 1e-3;
+  /// Sub-moves per substep at most (>= 1): bounds a frame's contact work whatever the tool does.
+  /// A tool that sweeps more than maxSubMoves * maxSubMoveFraction * radius in one substep (a
+  /// teleport, a jerk of live input) takes longer sub-moves and may pass through tissue; each such
+  /// substep is counted in InstrumentFrameReport::teleports.
+  int maxSubMoves = 64;
 };
 
 /// The render surface an instrument touches when the simulated vertices are the nodes of an
@@ -93,6 +98,7 @@ struct InstrumentFrameReport {
                                    ///< last pass of the frame's sub-moves (mm, >= 0)
   std::uint32_t grasped = 0;       ///< vertices held
   int subMoves = 0;                ///< sub-moves over the frame's substeps (last try of the frame)
+  int teleports = 0;               ///< substeps whose sweep needed more than maxSubMoves (last try)
   ToolPose pose{};                 ///< the tool at the end of the frame
 };
 
@@ -165,6 +171,7 @@ class Instrument final : public SubstepHook {
   double m_time = 0.0;     ///< s covered by the frame's substeps so far
   std::uint32_t m_lastContacts = 0;
   int m_subMoves = 0;
+  int m_teleports = 0;
   double m_maxDepth = 0.0;        ///< mm, embedding only
   std::vector<Vec3d> m_samples;   ///< N per substep of the current try
   double m_sampleInterval = 0.0;  ///< s

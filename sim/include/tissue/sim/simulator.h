@@ -4,9 +4,11 @@
 /// divergence (non-finite values, energy blow-up, over-stretched springs). A diverged frame is
 /// rolled back to its start and retried once with a more stable integrator at the same substeps,
 /// if the frame's time budget allows; otherwise (or when the retry diverges too) it is relaxed:
-/// the frame-start positions are kept at rest. A frame thus never costs more than about one
-/// budget, whatever happens. Every such event is reported, and the state handed out never
-/// holds NaN or Inf.
+/// the frame-start positions are kept at rest. A frame thus never runs more than two tries of its
+/// substeps (frameWorkBound(), counted in steps and solver iterations), whatever happens; in wall
+/// time a diverged frame's retry stays within the budget, while a slow fallback integrator that
+/// completes its frames (implicit Euler on a very stiff system) costs its own steps' time. Every such event
+/// is reported, and the state handed out never holds NaN or Inf.
 
 #include <string>
 #include <vector>
@@ -43,7 +45,10 @@ struct RecoveryConfig {
   double frameBudgetMs = 16.0;
   /// After this many frames without divergence a replaced integrator is replaced back by the
   /// configured one (a transient, such as a tool backing off compressed tissue, then costs a few
-  /// frames instead of every later frame). 0 keeps the fallback for good.
+  /// frames instead of every later frame). 0 keeps the fallback for good. When the configured
+  /// integrator diverges again within this many frames of coming back (it is unstable for the
+  /// system, not hit by a transient: explicit Euler at h far above 2/omega), the wait doubles,
+  /// up to 64 times this, so that a hopeless setting costs a retry ever more rarely.
   int relaxAfterFrames = 10;
 };
 
@@ -74,6 +79,11 @@ struct FrameReport {
   Integrator integrator{};  ///< the integrator that completed the frame
   int substeps = 0;         ///< its substeps
   int cgIterations = 0;     ///< summed over substeps (implicit Euler)
+  /// The frame's work, counted rather than timed (every try included): integrator steps run,
+  /// and the solver iterations (conjugate-gradient plus fast-mass-spring local/global) in them.
+  /// Never above Simulator::frameWorkBound().
+  int stepsRun = 0;
+  int solverIterations = 0;
   std::vector<DivergenceEvent> events;
   double integrateMs = 0.0;  ///< forces and integration
   double checkMs = 0.0;      ///< divergence checks
@@ -85,6 +95,14 @@ struct FrameReport {
   /// (the frame-start positions were kept at rest).
   std::string degrade;
   double recoveryMs = 0.0;  ///< wall time of the tries that diverged (the degrade's cost)
+};
+
+/// The most work one advanceFrame() may do: at most two tries (the configured or current
+/// integrator, one retry) of `substeps` steps each, each step at most the solver's iteration
+/// limit (ImplicitSolverConfig::maxIterations for CG, localGlobalIterations for the fast solver).
+struct FrameWorkBound {
+  int steps = 0;
+  int solverIterations = 0;
 };
 
 /// A system, its state and the frame loop. After a recovery the more stable setting is kept
@@ -110,6 +128,8 @@ class Simulator {
   Integrator integrator() const { return m_integrator; }
   int substeps() const { return m_substeps; }
   long frame() const { return m_frame; }
+  /// The stated bound on one frame's work (FrameReport::stepsRun, solverIterations).
+  FrameWorkBound frameWorkBound() const;
 
  private:
   Simulator(MassSpringSystem system, State initial, const SimulatorConfig& config);
@@ -126,7 +146,9 @@ class Simulator {
   SimulatorConfig m_config;
   Integrator m_integrator;
   int m_substeps;
-  int m_quietFrames = 0;  ///< frames since the last divergence event
+  int m_quietFrames = 0;   ///< frames since the last divergence event
+  int m_backoff = 1;       ///< relaxAfterFrames multiplier: doubled each time a restore fails
+  long m_restoredAt = -1;  ///< frame at which the configured integrator was last restored
   long m_frame = 0;
   double m_energyFloor = 0.0;
   StepWorkspace m_workspace;

@@ -42,6 +42,10 @@ struct FrameMetrics {
   std::vector<sim::Vec3d> forceSamplesN;
   double sampleIntervalS = 0.0;  ///< s
   double contactDepthMm = 0.0;   ///< lattice: deepest surface vertex left inside the tool (mm)
+  int stepsRun = 0;              ///< integrator steps, every try (sim::FrameReport::stepsRun)
+  int solverIterations = 0;      ///< CG and local/global iterations, every try
+  int toolSubMoves = 0;          ///< the tool's sub-moves (last try)
+  int teleports = 0;             ///< substeps whose tool sweep exceeded InstrumentConfig::maxSubMoves
 };
 
 /// The largest |F| (N) among a frame's per-substep force samples.
@@ -70,6 +74,8 @@ class ScenarioRun {
   const Scenario& scenario() const { return m_scenario; }
   const ScenarioMesh& mesh() const { return m_mesh; }
   const sim::Simulator& simulator() const { return m_simulator; }
+  /// The stated bound on one frame's steps and solver iterations (FrameMetrics never exceed it).
+  sim::FrameWorkBound frameWorkBound() const { return m_simulator.frameWorkBound(); }
   /// nullptr when the scenario has no instrument.
   const sim::Instrument* instrument() const { return m_instrument ? &*m_instrument : nullptr; }
   /// Positions (mm) per geometric vertex, as floats for the mesh module and the renderer.
@@ -95,8 +101,11 @@ struct RunSummary {
   double maxForceN = 0.0;
   double meanForceN = 0.0;
   long divergenceEvents = 0;
-  long degradedFrames = 0;   ///< frames that took a fallback integrator or were relaxed
-  double maxFactorMs = 0.0;  ///< the longest fast-solver (re)factoring of a frame, ms
+  long degradedFrames = 0;           ///< frames that took a fallback integrator or were relaxed
+  double maxFactorMs = 0.0;          ///< the longest fast-solver (re)factoring of a frame, ms
+  int maxFrameSteps = 0;             ///< the most integrator steps of a frame (all tries)
+  int maxFrameSolverIterations = 0;  ///< the most solver iterations of a frame (all tries)
+  long teleports = 0;                ///< tool substeps past the sub-move cap
   double meanIntegrateMs = 0.0, meanContactMs = 0.0, meanCheckMs = 0.0, meanRollbackMs = 0.0,
          meanActionMs = 0.0, meanTotalMs = 0.0;
 };
