@@ -2,6 +2,8 @@
 // error naming the file and the element or line.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstring>
 #include <filesystem>
 
 #include "test_meshes.h"
@@ -92,34 +94,103 @@ TEST(LoadMesh, ZeroAreaFaceIsDroppedLenientlyAndRejectedStrictly) {
   ASSERT_TRUE(mesh.ok()) << mesh.error().message;
   EXPECT_EQ(mesh->triangleCount(), 1u);
   EXPECT_EQ(report.droppedZeroAreaFaces, 1u);
-  ASSERT_EQ(report.warnings.size(), 1u);
+  ASSERT_EQ(report.warnings.size(), 2u);  // the sliver, and its vertex 4 that no face uses now
   EXPECT_NE(report.warnings[0].find("face 2 (line 6)"), std::string::npos) << report.warnings[0];
+  EXPECT_NE(report.warnings[1].find("dropped 1 vertices that no face uses (the first is vertex 4)"),
+            std::string::npos)
+      << report.warnings[1];
   const auto msg = loadError(path, {.strict = true});
   EXPECT_NE(msg.find("face 2 (line 6)"), std::string::npos) << msg;
   EXPECT_NE(msg.find("zero area"), std::string::npos) << msg;
 }
 
-TEST(LoadMesh, RejectsEdgeSharedByThreeFaces) {
-  const auto msg = loadError(writeTestFile("fin.obj",
-                                           "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\n"
-                                           "f 1 2 3\nf 2 1 4\nf 1 2 5\n"));
+// The repairs of lenient loading (issue 14): each gives the repaired counts and one warning
+// line naming the file; strict loading refuses the same file naming the face and the fix.
+std::size_t warningsContaining(const LoadReport& report, const std::string& what) {
+  return std::size_t(std::count_if(report.warnings.begin(), report.warnings.end(),
+                                   [&](const std::string& w) { return w.find(what) != std::string::npos; }));
+}
+
+TEST(LoadMesh, EdgeSharedByThreeFacesIsSplitLenientlyAndRejectedStrictly) {
+  const auto path = writeTestFile("fin.obj",
+                                  "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\n"
+                                  "f 1 2 3\nf 2 1 4\nf 1 2 5\n");
+  const auto msg = loadError(path, {.strict = true});
   EXPECT_NE(msg.find("non-manifold"), std::string::npos) << msg;
   EXPECT_NE(msg.find("face 3 (line 8)"), std::string::npos) << msg;
+  LoadReport report;
+  auto mesh = loadMesh(path, {}, &report);
+  ASSERT_TRUE(mesh.ok()) << mesh.error().message;
+  EXPECT_EQ(report.splitNonManifoldEdges, 1u);
+  EXPECT_EQ(mesh->triangleCount(), 3u);
+  EXPECT_EQ(mesh->geometricVertexCount, 7u);  // the third face got its own copies of 1 and 2
+  EXPECT_EQ(warningsContaining(report, "fin.obj: split 1 non-manifold edges"), 1u);
+  EXPECT_EQ(report.warnings.size(), 1u);
+  EXPECT_TRUE(validateMesh(*mesh, "fin").ok());
+  // The copies stand for the file's vertices 1 and 2 (0-based 0 and 1).
+  const auto& src = mesh->geometricSourceIndex;
+  EXPECT_EQ(std::count(src.begin(), src.end(), 0u), 2);
+  EXPECT_EQ(std::count(src.begin(), src.end(), 1u), 2);
 }
 
-TEST(LoadMesh, RejectsInconsistentOrientation) {
-  const auto msg =
-      loadError(writeTestFile("flip.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 3 4\n"));
-  EXPECT_NE(msg.find("oriented against"), std::string::npos) << msg;
+TEST(LoadMesh, MisorientedFaceIsFlippedLenientlyAndRejectedStrictly) {
+  // A strip of three faces; the middle one runs its shared edges the wrong way.
+  const auto path = writeTestFile("flip.obj",
+                                  "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\n"
+                                  "f 1 2 3\nf 2 3 4\nf 2 5 4\n");
+  EXPECT_NE(loadError(path, {.strict = true}).find("oriented against"), std::string::npos);
+  LoadReport report;
+  auto mesh = loadMesh(path, {}, &report);
+  ASSERT_TRUE(mesh.ok()) << mesh.error().message;
+  EXPECT_EQ(report.flippedFaces, 1u);
+  EXPECT_EQ(warningsContaining(report, "flip.obj: flipped 1 faces"), 1u);
+  EXPECT_EQ(report.warnings.size(), 1u);
+  // All three now face +z, as the majority did.
+  for (const auto& t : mesh->triangles) {
+    const Float3 a = mesh->positions[t[0]], b = mesh->positions[t[1]], c = mesh->positions[t[2]];
+    EXPECT_GT((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x), 0.0f);
+  }
 }
 
-TEST(LoadMesh, RejectsTwoSheetsTouchingAtAVertex) {
-  // Two triangles (a bow tie) sharing only vertex 1: each is fine, together not a 2-manifold.
-  const auto msg =
-      loadError(writeTestFile("bowtie.obj",
-                              "v 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nv 0 0 1\nv 1 0 1\n"
-                              "f 1 2 3\nf 1 4 5\nf 1 3 6\nf 1 6 7\nf 1 7 2\n"));
-  EXPECT_NE(msg.find("non-manifold"), std::string::npos) << msg;
+TEST(LoadMesh, BowTieVertexIsSplitLenientlyAndRejectedStrictly) {
+  // Two fans (faces 1-2 and 3-5) that share only vertex 1.
+  const auto path = writeTestFile("bowtie.obj",
+                                  "v 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nv 0 -1 1\nv 0 0 1\n"
+                                  "f 1 2 3\nf 1 3 7\nf 1 4 5\nf 1 5 6\nf 1 6 4\n");
+  EXPECT_NE(loadError(path, {.strict = true}).find("non-manifold"), std::string::npos);
+  LoadReport report;
+  auto mesh = loadMesh(path, {}, &report);
+  ASSERT_TRUE(mesh.ok()) << mesh.error().message;
+  EXPECT_EQ(report.splitBowTieVertices, 1u);
+  EXPECT_EQ(mesh->geometricVertexCount, 8u);  // vertex 1 is now two
+  EXPECT_EQ(warningsContaining(report, "bowtie.obj: split 1 bow-tie vertices"), 1u);
+  EXPECT_EQ(report.warnings.size(), 1u);
+  EXPECT_TRUE(validateMesh(*mesh, "bowtie").ok());
+}
+
+TEST(LoadMesh, UnusedVerticesAreDroppedWithAWarningAndRejectedStrictly) {
+  const auto path = writeTestFile("unused.off", "OFF\n5 1 0\n0 0 0\n9 9 9\n1 0 0\n0 1 0\n8 8 8\n3 0 2 3\n");
+  const auto msg = loadError(path, {.strict = true});
+  EXPECT_NE(msg.find("vertex 2 (and 1 more) is used by no face"), std::string::npos) << msg;
+  LoadReport report;
+  auto mesh = loadMesh(path, {}, &report);
+  ASSERT_TRUE(mesh.ok()) << mesh.error().message;
+  EXPECT_EQ(mesh->geometricVertexCount, 3u);
+  EXPECT_EQ(report.droppedUnusedVertices, 2u);
+  EXPECT_EQ(warningsContaining(report, "unused.off: dropped 2 vertices that no face uses"), 1u);
+  EXPECT_EQ(report.warnings.size(), 1u);
+}
+
+TEST(LoadMesh, HugeDeclaredCountsFailAtOnceWithOneLine) {
+  const auto off =
+      loadError(writeTestFile("huge.off", "OFF\n1000000000000 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_NE(off.find("huge.off: the OFF header declares 1000000000000 vertices"), std::string::npos) << off;
+  EXPECT_EQ(off.find('\n'), std::string::npos);
+  std::string stl(84 + 50, '\0');
+  const std::uint32_t n = 4000000000u;
+  std::memcpy(stl.data() + 80, &n, 4);
+  const auto msg = loadError(writeTestFile("huge.stl", stl));
+  EXPECT_NE(msg.find("declares 4000000000 triangles, but the file has room for 1"), std::string::npos) << msg;
 }
 
 TEST(LoadMesh, MissingUvsWhenRequired) {

@@ -5,9 +5,11 @@
 #include <OpenMesh/Core/IO/importer/BaseImporter.hh>
 #include <algorithm>
 #include <cctype>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <string_view>
 
 namespace tissue::mesh::detail {
 namespace {
@@ -159,6 +161,49 @@ Result<void> scanTextForNonFinite(const std::filesystem::path& path, const std::
   return {};
 }
 
+/// Bounded memory on bad input: the counts an OFF or binary STL header declares are checked
+/// against the file size before a reader allocates for them, so a header declaring 10^12
+/// vertices fails at once. Each OFF vertex or face takes at least 5 bytes ("0 0 0", binary:
+/// 12); each binary STL triangle exactly 50 after the 84-byte header.
+Result<void> checkDeclaredCounts(const std::filesystem::path& path, const std::string& ext) {
+  std::error_code ec;
+  const auto size = std::uint64_t(std::filesystem::file_size(path, ec));
+  if (ec) return {};
+  std::ifstream in(path, std::ios::binary);
+  if (ext == ".stl") {
+    char head[84] = {};
+    if (!in.read(head, 84)) return {};
+    std::uint32_t n = 0;
+    std::memcpy(&n, head + 80, 4);  // little-endian, as the format says
+    if (std::uint64_t(84) + 50ull * n == size) return {};
+    if (std::string_view(head, 5) == "solid") return {};  // ASCII STL
+    return Error{path.string() + ": binary STL header declares " + std::to_string(n) +
+                 " triangles, but the file has room for " + std::to_string(size < 84 ? 0 : (size - 84) / 50) +
+                 "; the file is truncated or not an STL"};
+  }
+  // OFF: the first line with content after the "OFF" keyword holds "vertices faces edges".
+  std::string line;
+  std::getline(in, line);
+  const bool keywordOnly = line.find_first_of("0123456789") == std::string::npos;
+  if (keywordOnly) {
+    while (std::getline(in, line)) {
+      const auto start = line.find_first_not_of(" \t\r");
+      if (start != std::string::npos && line[start] != '#') break;
+    }
+  } else {
+    line = line.substr(line.find_first_of("0123456789"));
+  }
+  std::istringstream counts(line);
+  double vertices = 0, faces = 0;
+  if (!(counts >> vertices >> faces)) return {};  // OpenMesh's reader reports the bad header
+  if (vertices < 0 || faces < 0 || (vertices + faces) * 5.0 > double(size)) {
+    return Error{path.string() + ": the OFF header declares " + std::to_string(std::int64_t(vertices)) +
+                 " vertices and " + std::to_string(std::int64_t(faces)) + " faces, more than a " +
+                 std::to_string(size) + "-byte file can hold; fix the counts on the header line"};
+  }
+  return {};
+}
+
 }  // namespace
 
 Result<RawMesh> readRawMesh(const std::filesystem::path& path) {
@@ -173,6 +218,9 @@ Result<RawMesh> readRawMesh(const std::filesystem::path& path) {
                  "'; give an .obj, .ply, .off or .stl file"};
   }
   if (ext == ".obj") return readObj(path);
+  if (ext != ".ply") {
+    if (auto counts = checkDeclaredCounts(path, ext); !counts) return counts.error();
+  }
   if (auto scan = scanTextForNonFinite(path, ext); !scan) return scan.error();
   RawMesh raw;
   RawImporter importer(raw);

@@ -16,18 +16,24 @@ namespace tissue::mesh {
 struct LoadOptions {
   bool requireUvs = false;  ///< fail when the file has no texture coordinates
   float scaleToMm = 1.0f;   ///< mm per file unit (the SOFA meshes state no units)
-  /// Strict: zero-area faces and faces with fewer than three vertices are errors. Lenient (the
-  /// default): they are dropped and reported in LoadReport, because real exported organ meshes
-  /// carry collapsed slivers and stray line elements that a renderer can simply skip. Repeated
-  /// indices, out-of-range indices, NaN/Inf and non-manifold faces are errors in both modes.
+  /// Strict: zero-area faces, faces with fewer than three vertices, non-manifold edges, bow-tie
+  /// vertices, inconsistently oriented faces and unused vertices are errors. Lenient (the
+  /// default): they are dropped or repaired (as MeshLab and VTK open such files) and each kind is
+  /// reported as one warning line with counts in LoadReport, because real exported organ meshes
+  /// carry collapsed slivers, stray line elements and a few non-manifold spots. Repeated indices,
+  /// out-of-range indices and NaN/Inf are errors in both modes.
   bool strict = false;
 };
 
 /// What the loader changed or noticed (lenient mode).
 struct LoadReport {
-  std::size_t droppedZeroAreaFaces = 0;  ///< triangles with three distinct but collinear vertices
-  std::size_t droppedLineElements = 0;   ///< faces with fewer than three vertices
-  std::vector<std::string> warnings;     ///< one line each, naming the file and the element
+  std::size_t droppedZeroAreaFaces = 0;   ///< triangles with three distinct but collinear vertices
+  std::size_t droppedLineElements = 0;    ///< faces with fewer than three vertices
+  std::size_t splitNonManifoldEdges = 0;  ///< edges shared by more than two faces, split
+  std::size_t splitBowTieVertices = 0;    ///< vertices joining separate sheets, split
+  std::size_t flippedFaces = 0;           ///< faces reversed to agree with their neighbours
+  std::size_t droppedUnusedVertices = 0;  ///< file vertices no face uses
+  std::vector<std::string> warnings;      ///< one line each, naming the file and the element
 };
 
 /// Loads `path` (.obj, .ply, .off, .stl; polygons are fan-triangulated) into render vertices
