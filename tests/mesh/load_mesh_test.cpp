@@ -236,7 +236,92 @@ TEST(LoadMesh, OutOfRangeIndexInPly) {
   std::string ply = kQuadPly;
   ply.replace(ply.find("3 0 2 3"), 7, "3 0 2 9");
   const auto msg = loadError(writeTestFile("range.ply", ply));
-  EXPECT_NE(msg.find("face 2 refers to vertex 10"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("face 2 (line 17) refers to vertex 10"), std::string::npos) << msg;
+}
+
+// A 2 x 3 grid of points in the z = 0 plane as one strip (MeshLab's `element tristrips`), with a
+// -1 restart and a repeated index joining two strips: every triangle faces +z.
+std::string stripPly(const std::string& format) {
+  return "ply\nformat " + format +
+         " 1.0\ncomment strips as MeshLab writes them\nelement vertex 6\nproperty float x\nproperty float y\n"
+         "property float z\nelement tristrips 1\nproperty list int int vertex_indices\nend_header\n";
+}
+const float kGrid[6][3] = {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}, {2, 0, 0}, {2, 1, 0}};
+// Strip 0 2 1 3 gives (0,2,1), (2,3,1); after the restart, 2 4 3 3 5 gives (2,4,3) and two
+// triangles repeating 3 (a join, no area), skipped. A second list 4 5 3 adds (4,5,3).
+const int kStrips[] = {0, 2, 1, 3, -1, 2, 4, 3, 3, 5};
+
+float normalZ(const SurfaceMesh& m, const Triangle& t) {
+  const Float3 a = m.positions[t[0]], b = m.positions[t[1]], c = m.positions[t[2]];
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+void expectStripMesh(const std::filesystem::path& path) {
+  LoadReport report;
+  auto mesh = loadMesh(path, {.strict = true}, &report);
+  ASSERT_TRUE(mesh.ok()) << mesh.error().message;
+  EXPECT_EQ(mesh->triangleCount(), 4u);
+  EXPECT_EQ(mesh->geometricVertexCount, 6u);
+  for (const auto& t : mesh->triangles)
+    EXPECT_GT(normalZ(*mesh, t), 0.0f) << "the strip starts counter-clockwise seen from +z (0, 2, 1)";
+}
+
+TEST(LoadMesh, PlyTriangleStripsAsciiAndBinary) {
+  std::string ascii = stripPly("ascii");
+  for (const auto& p : kGrid)
+    ascii += std::to_string(p[0]) + " " + std::to_string(p[1]) + " " + std::to_string(p[2]) + "\n";
+  ascii += "10 0 2 1 3 -1 2 4 3 3 5\n";
+  ascii.replace(ascii.find("element tristrips 1"), 19, "element tristrips 2");
+  ascii += "3 4 5 3\n";
+  expectStripMesh(writeTestFile("strip.ply", ascii));
+  for (const bool little : {true, false}) {
+    std::string bin = stripPly(little ? "binary_little_endian" : "binary_big_endian");
+    bin.replace(bin.find("element tristrips 1"), 19, "element tristrips 2");
+    const auto put = [&](const void* v) {
+      char b[4];
+      std::memcpy(b, v, 4);
+      if (!little) std::swap(b[0], b[3]), std::swap(b[1], b[2]);
+      bin.append(b, 4);
+    };
+    for (const auto& p : kGrid)
+      for (float c : p)
+        put(&c);
+    for (const std::vector<int>& strip :
+         {std::vector<int>(std::begin(kStrips), std::end(kStrips)), std::vector<int>{4, 5, 3}}) {
+      const int n = int(strip.size());
+      put(&n);
+      for (int idx : strip)
+        put(&idx);
+    }
+    expectStripMesh(writeTestFile(little ? "strip_le.ply" : "strip_be.ply", bin));
+  }
+}
+
+TEST(LoadMesh, PlyWithExtraListPropertiesReadsTheSameGeometry) {
+  const std::string plain = kQuadPly;
+  const std::string extra =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty list uchar float weights\n"
+      "property float y\nproperty float z\nproperty float u\nproperty float v\nproperty uchar red\n"
+      "element face 2\nproperty list uchar int vertex_indices\nproperty list uchar float texcoord\n"
+      "property int flags\nelement edge 1\nproperty int vertex1\nproperty int vertex2\nend_header\n"
+      "0 2 0.5 0.5 0 0 0 0 255\n1 0 0 0 1 0 7\n1 3 1 2 3 1 0 1 1 9\n0 1 9 1 0 0 1 1\n"
+      "3 0 1 2 6 0 0 1 0 1 1 5\n3 0 2 3 6 0 0 1 1 0 1 6\n0 1\n";
+  auto a = loadMesh(writeTestFile("plain.ply", plain));
+  auto b = loadMesh(writeTestFile("extra.ply", extra));
+  ASSERT_TRUE(a.ok()) << a.error().message;
+  ASSERT_TRUE(b.ok()) << b.error().message;
+  EXPECT_EQ(a->triangles, b->triangles);
+  EXPECT_EQ(a->positions, b->positions);
+  EXPECT_EQ(a->uvs, b->uvs);  // per-corner texcoords equal to the per-vertex u, v
+}
+
+TEST(LoadMesh, PlyHugeDeclaredCountFailsAtOnce) {
+  std::string ply = kQuadPly;
+  ply.replace(ply.find("element vertex 4"), 16, "element vertex 1000000000000");
+  const auto msg = loadError(writeTestFile("huge.ply", ply));
+  EXPECT_NE(msg.find("huge.ply:3: element 'vertex' declares 1000000000000 entries"), std::string::npos)
+      << msg;
+  EXPECT_EQ(msg.find('\n'), std::string::npos);
 }
 
 TEST(LoadMesh, UnsupportedExtensionAndMissingFile) {

@@ -218,10 +218,9 @@ Result<RawMesh> readRawMesh(const std::filesystem::path& path) {
                  "'; give an .obj, .ply, .off or .stl file"};
   }
   if (ext == ".obj") return readObj(path);
-  if (ext != ".ply") {
-    if (auto counts = checkDeclaredCounts(path, ext); !counts) return counts.error();
-  }
   if (auto scan = scanTextForNonFinite(path, ext); !scan) return scan.error();
+  if (ext == ".ply") return readPly(path);
+  if (auto counts = checkDeclaredCounts(path, ext); !counts) return counts.error();
   RawMesh raw;
   RawImporter importer(raw);
   OpenMesh::IO::Options options = OpenMesh::IO::Options::FaceTexCoord | OpenMesh::IO::Options::VertexTexCoord;

@@ -1,5 +1,5 @@
 #pragma once
-// The OpenMesh adapter's reading half: OpenMesh's format readers (OBJ, PLY, OFF, STL) feed a
+// The OpenMesh adapter's reading half: OpenMesh's format readers (OFF, STL) feed a
 // raw importer that records exactly what the file says - points, polygons, per-corner and
 // per-vertex texture coordinates - without OpenMesh's topology checks, which silently drop
 // non-manifold faces. Validation then names each defect (validate_mesh.cpp).
@@ -22,11 +22,15 @@ struct RawMesh {
   std::vector<int> polygonLines;  ///< per polygon: 1-based line in the file, or empty if unknown
 };
 
-/// Reads `path`: OBJ with the project's strict reader (obj_reader.cpp), PLY, OFF and STL with
-/// OpenMesh's readers.
+/// Reads `path`: OBJ and PLY with the project's readers (obj_reader.cpp, ply_reader.cpp), OFF
+/// and STL with OpenMesh's readers.
 Result<RawMesh> readRawMesh(const std::filesystem::path& path);
 
 /// The strict OBJ reader: every defect reported with its line number.
 Result<RawMesh> readObj(const std::filesystem::path& path);
+
+/// The PLY reader (ASCII and binary): faces, triangle strips (-1 restarts), every other element
+/// and property skipped by its declared type; declared counts checked against the file size.
+Result<RawMesh> readPly(const std::filesystem::path& path);
 
 }  // namespace tissue::mesh::detail
