@@ -126,6 +126,7 @@ Result<SurfaceMesh> loadMesh(const std::filesystem::path& path, const LoadOption
     return Error{source + ": scale " + std::to_string(options.scaleToMm) +
                  " mm per unit is invalid; give a positive scale"};
   }
+  rep.warnings.insert(rep.warnings.end(), raw->notes.begin(), raw->notes.end());
   auto uvSource = uvSourceOf(*raw, source);
   if (!uvSource) return uvSource.error();
   if (options.requireUvs && *uvSource == UvSource::None) {

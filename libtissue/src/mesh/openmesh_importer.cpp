@@ -1,6 +1,8 @@
 // OpenMesh adapter, reading half (see openmesh_importer.h for why a raw importer).
 #include "openmesh_importer.h"
 
+#include "tissue/volume/vtk_surface.h"
+
 #include <OpenMesh/Core/IO/IOManager.hh>
 #include <OpenMesh/Core/IO/importer/BaseImporter.hh>
 #include <algorithm>
@@ -204,6 +206,33 @@ Result<void> checkDeclaredCounts(const std::filesystem::path& path, const std::s
   return {};
 }
 
+/// A VTK surface (legacy POLYDATA or XML PolyData, read by the volume module's VTK adapter).
+Result<RawMesh> readVtk(const std::filesystem::path& path) {
+  auto surface = volume::readVtkSurface(path);
+  if (!surface) return surface.error();
+  RawMesh raw;
+  raw.points.reserve(surface->points.size());
+  for (const auto& p : surface->points)
+    raw.points.push_back({float(p[0]), float(p[1]), float(p[2])});
+  // Ids beyond int become -1, which the loader reports as out of range.
+  const auto toInts = [](const std::vector<std::int64_t>& cell) {
+    std::vector<int> out(cell.size());
+    std::transform(cell.begin(), cell.end(), out.begin(),
+                   [](std::int64_t id) { return id >= 0 && id <= 2147483647 ? int(id) : -1; });
+    return out;
+  };
+  for (const auto& cell : surface->polygons) {
+    raw.polygons.push_back(toInts(cell));
+    raw.cornerUvs.emplace_back();
+  }
+  for (const auto& strip : surface->strips)
+    appendStripTriangles(toInts(strip), 0, raw);
+  if (surface->ignoredCells > 0)
+    raw.notes.push_back(path.string() + ": ignored " + std::to_string(surface->ignoredCells) +
+                        " VERTICES and LINES cells (a surface mesh keeps POLYGONS and TRIANGLE_STRIPS)");
+  return raw;
+}
+
 }  // namespace
 
 Result<RawMesh> readRawMesh(const std::filesystem::path& path) {
@@ -213,11 +242,12 @@ Result<RawMesh> readRawMesh(const std::filesystem::path& path) {
   }
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl") {
+  if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl" && ext != ".vtk" && ext != ".vtp") {
     return Error{"cannot read mesh '" + path.string() + "': unsupported extension '" + ext +
-                 "'; give an .obj, .ply, .off or .stl file"};
+                 "'; give an .obj, .ply, .off, .stl or VTK surface (.vtk POLYDATA, .vtp) file"};
   }
   if (ext == ".obj") return readObj(path);
+  if (ext == ".vtk" || ext == ".vtp") return readVtk(path);
   if (auto scan = scanTextForNonFinite(path, ext); !scan) return scan.error();
   if (ext == ".ply") return readPly(path);
   if (auto counts = checkDeclaredCounts(path, ext); !counts) return counts.error();

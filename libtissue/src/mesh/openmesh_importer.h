@@ -19,7 +19,8 @@ struct RawMesh {
   std::vector<std::vector<int>> polygons;                    ///< 0-based point indices
   std::vector<std::vector<std::array<float, 2>>> cornerUvs;  ///< per polygon; empty if none
   std::vector<std::array<float, 2>> vertexUvs;               ///< per point; empty if none
-  std::vector<int> polygonLines;  ///< per polygon: 1-based line in the file, or empty if unknown
+  std::vector<int> polygonLines;   ///< per polygon: 1-based line in the file, or empty if unknown
+  std::vector<std::string> notes;  ///< what the reader skipped, one warning line each
 };
 
 /// Reads `path`: OBJ and PLY with the project's readers (obj_reader.cpp, ply_reader.cpp), OFF
@@ -32,5 +33,11 @@ Result<RawMesh> readObj(const std::filesystem::path& path);
 /// The PLY reader (ASCII and binary): faces, triangle strips (-1 restarts), every other element
 /// and property skipped by its declared type; declared counts checked against the file size.
 Result<RawMesh> readPly(const std::filesystem::path& path);
+
+/// Appends the triangles of one triangle strip (PLY tristrips, VTK TRIANGLE_STRIPS) to `out`:
+/// triangle i is (s[i-2], s[i-1], s[i]), every second one reversed so all keep the strip's
+/// orientation; triangles repeating an index (joins between strips) are skipped. `line` > 0 is
+/// recorded as each triangle's line.
+void appendStripTriangles(const std::vector<int>& strip, int line, RawMesh& out);
 
 }  // namespace tissue::mesh::detail

@@ -244,20 +244,6 @@ int indexOf(const PlyElement& e, std::initializer_list<std::string_view> names) 
   return -1;
 }
 
-/// Triangles of one strip (a list between -1 restarts): every third index makes a triangle,
-/// odd ones reversed so all keep the strip's orientation; triangles repeating an index (the
-/// strip's joins) carry no area and are skipped.
-void stripTriangles(const std::vector<int>& strip, int line, RawMesh& out) {
-  for (std::size_t i = 2; i < strip.size(); ++i) {
-    std::vector<int> tri = (i % 2 == 0) ? std::vector<int>{strip[i - 2], strip[i - 1], strip[i]}
-                                        : std::vector<int>{strip[i - 1], strip[i - 2], strip[i]};
-    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
-    out.polygons.push_back(std::move(tri));
-    out.cornerUvs.emplace_back();
-    if (line > 0) out.polygonLines.push_back(line);
-  }
-}
-
 }  // namespace
 
 Result<RawMesh> readPly(const std::filesystem::path& path) {
@@ -359,17 +345,28 @@ Result<RawMesh> readPly(const std::filesystem::path& path) {
         std::vector<int> strip;
         for (int idx : polygon) {
           if (idx < 0) {
-            stripTriangles(strip, body.ascii() ? itemLine : 0, raw);
+            appendStripTriangles(strip, body.ascii() ? itemLine : 0, raw);
             strip.clear();
           } else {
             strip.push_back(idx);
           }
         }
-        stripTriangles(strip, body.ascii() ? itemLine : 0, raw);
+        appendStripTriangles(strip, body.ascii() ? itemLine : 0, raw);
       }
     }
   }
   return raw;
+}
+
+void appendStripTriangles(const std::vector<int>& strip, int line, RawMesh& out) {
+  for (std::size_t i = 2; i < strip.size(); ++i) {
+    std::vector<int> tri = (i % 2 == 0) ? std::vector<int>{strip[i - 2], strip[i - 1], strip[i]}
+                                        : std::vector<int>{strip[i - 1], strip[i - 2], strip[i]};
+    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
+    out.polygons.push_back(std::move(tri));
+    out.cornerUvs.emplace_back();
+    if (line > 0) out.polygonLines.push_back(line);
+  }
 }
 
 }  // namespace tissue::mesh::detail

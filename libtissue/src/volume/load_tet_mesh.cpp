@@ -2,10 +2,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <string>
 
 #include "raw_volume.h"
 #include "tissue/volume/tet_mesh.h"
+#include "tissue/volume/vtk_surface.h"
 
 namespace tissue::volume {
 namespace {
@@ -101,9 +104,79 @@ Result<TetMesh> validate(const detail::RawVolume& raw, const std::string& where,
 
 }  // namespace
 
+namespace detail {
+
+VtkContent sniffVtk(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(head.data(), std::streamsize(head.size()));
+  head.resize(std::size_t(in.gcount()));
+  const auto first = head.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos) return VtkContent::Unknown;
+  if (head[first] == '<') {
+    const auto type = head.find("type=\"");
+    if (type == std::string::npos) return VtkContent::Unknown;
+    const std::string value = head.substr(type + 6, head.find('"', type + 6) - (type + 6));
+    if (value == "UnstructuredGrid") return VtkContent::XmlGrid;
+    if (value == "PolyData") return VtkContent::XmlSurface;
+    return VtkContent::Unknown;
+  }
+  std::string upper(head.size(), ' ');
+  std::transform(head.begin(), head.end(), upper.begin(),
+                 [](unsigned char c) { return char(std::toupper(c)); });
+  const auto dataset = upper.find("\nDATASET");
+  if (dataset == std::string::npos) return VtkContent::Unknown;
+  std::string kind = upper.substr(dataset + 9, upper.find('\n', dataset + 1) - (dataset + 9));
+  kind.erase(0, kind.find_first_not_of(" \t"));
+  kind.erase(kind.find_last_not_of(" \t\r") + 1);
+  if (kind == "POLYDATA") return VtkContent::LegacySurface;
+  if (kind == "UNSTRUCTURED_GRID") return VtkContent::LegacyGrid;
+  return VtkContent::Unknown;
+}
+
+Result<void> checkLegacyVtkCounts(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto size = std::uint64_t(std::filesystem::file_size(path, ec));
+  if (ec) return {};
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  for (int k = 0; k < 8 && std::getline(in, line); ++k) {
+    if (line.rfind("POINTS", 0) != 0) continue;
+    double n = 0;
+    if (std::sscanf(line.c_str() + 6, "%lf", &n) != 1) return {};
+    // Each point takes at least 6 bytes as text ("0 0 0 ") and 12 in binary floats.
+    if (n < 0 || n * 6.0 > double(size))
+      return Error{path.string() + ":" + std::to_string(k + 1) + ": POINTS declares " +
+                   std::to_string(std::uint64_t(std::max(0.0, n))) + " points, more than a " +
+                   std::to_string(size) + "-byte file can hold; fix the count or the truncated file"};
+    return {};
+  }
+  return {};
+}
+
+}  // namespace detail
+
+bool isVtkSurfacePath(const std::filesystem::path& path) {
+  const std::string ext = lowerExtension(path);
+  if (ext == ".vtp") return true;
+  if (ext != ".vtk") return false;
+  const auto content = detail::sniffVtk(path);
+  return content == detail::VtkContent::LegacySurface || content == detail::VtkContent::XmlSurface;
+}
+
+Result<VtkSurface> readVtkSurface(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    return Error{path.string() + ": no such file; check the path"};
+  const bool xml = lowerExtension(path) == ".vtp" || detail::sniffVtk(path) == detail::VtkContent::XmlSurface;
+  if (!xml)
+    if (auto counts = detail::checkLegacyVtkCounts(path); !counts) return counts.error();
+  return detail::readVtkPolyData(path, xml);
+}
+
 bool isTetMeshPath(const std::filesystem::path& path) {
   const std::string ext = lowerExtension(path);
-  return ext == ".vtk" || ext == ".vtu" || ext == ".msh";
+  return (ext == ".vtk" && !isVtkSurfacePath(path)) || ext == ".vtu" || ext == ".msh";
 }
 
 Result<TetMesh> loadTetMesh(const std::filesystem::path& path, const TetLoadOptions& options,
@@ -112,9 +185,17 @@ Result<TetMesh> loadTetMesh(const std::filesystem::path& path, const TetLoadOpti
     return Error{path.string() + ": the scale must be a positive number of mm per file unit"};
   const std::string ext = lowerExtension(path);
   Result<detail::RawVolume> raw = Error{""};
-  if (ext == ".vtk")
+  const auto content = ext == ".vtk" ? detail::sniffVtk(path) : detail::VtkContent::Unknown;
+  if (content == detail::VtkContent::LegacySurface || content == detail::VtkContent::XmlSurface)
+    return Error{path.string() + ": holds a surface (" +
+                 (content == detail::VtkContent::XmlSurface ? "VTK XML PolyData" : "DATASET POLYDATA") +
+                 "), not tetrahedra; load it as a surface mesh (tissue-sim mesh-info reads it as one)"};
+  if (content == detail::VtkContent::XmlGrid)
+    raw = detail::readVtu(path);  // XML content under a .vtk name: VTK's XML reader reads it
+  else if (ext == ".vtk") {
+    if (auto counts = detail::checkLegacyVtkCounts(path); !counts) return counts.error();
     raw = detail::readLegacyVtk(path);
-  else if (ext == ".vtu")
+  } else if (ext == ".vtu")
     raw = detail::readVtu(path);
   else if (ext == ".msh")
     raw = detail::readGmsh(path);

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// Loading triangle meshes (OBJ, PLY, OFF, STL) through OpenMesh's readers, with strict
-/// validation: every defect is reported as one Error naming the file and the element.
+/// Loading triangle meshes (OBJ, PLY, OFF, STL, VTK surfaces), with validation: every defect is
+/// reported as one Error naming the file and the element, or (lenient mode) repaired with one
+/// warning line per kind of repair.
 
 #include <filesystem>
 #include <string>
@@ -36,10 +37,14 @@ struct LoadReport {
   std::vector<std::string> warnings;      ///< one line each, naming the file and the element
 };
 
-/// Loads `path` (.obj, .ply, .off, .stl; polygons are fan-triangulated) into render vertices
-/// split at UV seams. Rejects NaN/Inf coordinates, out-of-range indices, degenerate and
-/// non-manifold faces, and missing UVs when `options.requireUvs`; the error names the file
-/// and the vertex or face (1-based, in file order) and says how to fix it.
+/// Loads `path` (.obj, .ply including triangle strips, .off, .stl, and VTK surfaces: a .vtk with
+/// DATASET POLYDATA or XML PolyData content, or .vtp, read through the volume module's VTK
+/// adapter; polygons are fan-triangulated, strips split) into render vertices
+/// split at UV seams. Rejects NaN/Inf coordinates, out-of-range indices, faces repeating a
+/// vertex, declared counts the file size cannot hold, and missing UVs when `options.requireUvs`;
+/// lenient mode repairs non-manifold edges, bow-tie vertices and misoriented faces and drops
+/// unused vertices (strict refuses them); the error names the file and the vertex or face
+/// (1-based, in file order) and says how to fix it.
 Result<SurfaceMesh> loadMesh(const std::filesystem::path& path, const LoadOptions& options = {},
                              LoadReport* report = nullptr);
 
