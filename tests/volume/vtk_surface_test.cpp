@@ -70,5 +70,26 @@ TEST(VtkSurface, BadSurfaceIsOneLine) {
   EXPECT_EQ(mesh.error().message.find('\n'), std::string::npos);
 }
 
+// VTK 9.1's vtkPolyDataReader crashes on a cell section that ends early or holds a non-number;
+// the adapter counts the sections first, so these are one line, not a SIGSEGV.
+TEST(VtkSurface, TruncatedOrDamagedCellSectionsAreOneLineNotACrash) {
+  const std::string head =
+      "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 4 float\n"
+      "0 0 0 1 0 0 0 1 0 1 1 0\nPOLYGONS 1 4\n";
+  const auto truncated = mesh::loadMesh(writeTestFile("cut_polygons.vtk", head + "3 0 1 "));
+  ASSERT_FALSE(truncated.ok());
+  EXPECT_NE(truncated.error().message.find(
+                "cut_polygons.vtk:7: POLYGONS declares 4 integers, but entry 4 is past the end of the file"),
+            std::string::npos)
+      << truncated.error().message;
+  const auto damaged = mesh::loadMesh(writeTestFile("bad_polygons.vtk", head + "3\xcb"
+                                                                               "0 1 2\n"));
+  ASSERT_FALSE(damaged.ok());
+  EXPECT_NE(damaged.error().message.find("bad_polygons.vtk:7: POLYGONS declares 4 integers, but entry 1 is"),
+            std::string::npos)
+      << damaged.error().message;
+  EXPECT_EQ(damaged.error().message.find('\n'), std::string::npos);
+}
+
 }  // namespace
 }  // namespace tissue::volume

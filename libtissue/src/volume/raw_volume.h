@@ -30,8 +30,8 @@ struct RawVolume {
 enum class VtkContent { LegacyGrid, LegacySurface, XmlGrid, XmlSurface, Unknown };
 VtkContent sniffVtk(const std::filesystem::path& path);
 
-/// Bounded memory: the POINTS count of a legacy .vtk header against the file size, before VTK
-/// allocates for it.
+/// Bounded memory and VTK's own robustness: the POINTS count of a legacy .vtk header against
+/// the file size, and (text files) each cell section's declared integers, before VTK reads it.
 Result<void> checkLegacyVtkCounts(const std::filesystem::path& path);
 
 /// Legacy VTK unstructured grid (.vtk) through vtkUnstructuredGridReader.
