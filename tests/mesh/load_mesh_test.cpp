@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
 
 #include "test_meshes.h"
 #include "tissue/mesh/load_mesh.h"
@@ -179,6 +182,49 @@ TEST(LoadMesh, UnusedVerticesAreDroppedWithAWarningAndRejectedStrictly) {
   EXPECT_EQ(report.droppedUnusedVertices, 2u);
   EXPECT_EQ(warningsContaining(report, "unused.off: dropped 2 vertices that no face uses"), 1u);
   EXPECT_EQ(report.warnings.size(), 1u);
+}
+
+/// Volume enclosed by the mesh's triangles (divergence theorem), in double.
+double signedVolume(const SurfaceMesh& m) {
+  double v = 0;
+  for (const auto& t : m.triangles) {
+    const Float3 a = m.positions[t[0]], b = m.positions[t[1]], c = m.positions[t[2]];
+    const double ax = a.x, ay = a.y, az = a.z, bx = b.x, by = b.y, bz = b.z, cx = c.x, cy = c.y, cz = c.z;
+    v += (ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx)) / 6.0;
+  }
+  return v;
+}
+
+TEST(LoadMesh, AStandardMeshWithFlippedFacesAndAFinIsRepairedToTheOriginal) {
+  // The shared torus with three faces written backwards and one extra face on an edge (a fin).
+  const auto torus = std::filesystem::path(TISSUE_TEST_SHARED_DIR) / "meshes" / "torus.obj";
+  auto original = loadMesh(torus, {.strict = true});
+  ASSERT_TRUE(original.ok()) << original.error().message;
+  std::ifstream in(torus);
+  std::string text, line;
+  int face = 0;
+  while (std::getline(in, line)) {
+    if (line.rfind("f ", 0) == 0 && (++face == 5 || face == 700 || face == 1234)) {
+      std::istringstream corners(line.substr(2));
+      std::vector<std::string> c{std::istream_iterator<std::string>(corners), {}};
+      line = "f " + c[2] + " " + c[1] + " " + c[0];
+    }
+    text += line + "\n";
+  }
+  text += "v 0 9 0\nvt 0 0\nf 41/42 42/43 -1/-1\n";  // on the edge of face 1
+  const auto path = writeTestFile("torus_defects.obj", text);
+  EXPECT_FALSE(loadMesh(path, {.strict = true}).ok());
+  LoadReport report;
+  auto repaired = loadMesh(path, {}, &report);
+  ASSERT_TRUE(repaired.ok()) << repaired.error().message;
+  EXPECT_EQ(report.flippedFaces, 3u);
+  EXPECT_EQ(report.splitNonManifoldEdges, 1u);
+  EXPECT_EQ(report.warnings.size(), 2u);
+  EXPECT_EQ(repaired->triangleCount(), original->triangleCount() + 1);
+  EXPECT_TRUE(validateMesh(*repaired, "torus_defects").ok());
+  // The torus keeps its orientation: the same enclosed volume (the fin, a flap, adds little).
+  repaired->triangles.pop_back();
+  EXPECT_NEAR(signedVolume(*repaired), signedVolume(*original), 1e-6 * std::abs(signedVolume(*original)));
 }
 
 TEST(LoadMesh, HugeDeclaredCountsFailAtOnceWithOneLine) {
