@@ -320,6 +320,11 @@ TEST(LoadMesh, PlyTriangleStripsAsciiAndBinary) {
   ascii.replace(ascii.find("element tristrips 1"), 19, "element tristrips 2");
   ascii += "3 4 5 3\n";
   expectStripMesh(writeTestFile("strip.ply", ascii));
+  // Some writers declare the strip list unsigned and write the restart as 2^32 - 1.
+  std::string unsignedList = ascii;
+  unsignedList.replace(unsignedList.find("list int int"), 12, "list int uint");
+  unsignedList.replace(unsignedList.find(" -1 "), 4, " 4294967295 ");
+  expectStripMesh(writeTestFile("strip_uint.ply", unsignedList));
   for (const bool little : {true, false}) {
     std::string bin = stripPly(little ? "binary_little_endian" : "binary_big_endian");
     bin.replace(bin.find("element tristrips 1"), 19, "element tristrips 2");

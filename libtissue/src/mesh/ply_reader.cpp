@@ -321,6 +321,7 @@ Result<RawMesh> readPly(const std::filesystem::path& path) {
           if (!body.read(prop.type, entry)) return fail("expected a number in list '" + prop.name + "'");
         if (int(k) == indices) {
           for (double idx : list) {
+            if (isStrip && idx == 4294967295.0) idx = -1;  // a restart written as an unsigned list
             if (idx != std::floor(idx) || std::abs(idx) > 2147483647.0)
               return fail("vertex index " + std::to_string(idx) + " is not an integer index");
             polygon.push_back(int(idx));
