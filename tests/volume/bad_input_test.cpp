@@ -68,13 +68,63 @@ TEST(VolumeBadInput, NonFiniteCoordinateNamesTheVertex) {
               "vertex 3 has a coordinate that is not finite");
 }
 
-TEST(VolumeBadInput, NotAnUnstructuredGridIsAnError) {
+TEST(VolumeBadInput, ASurfaceVtkIsNotATetMeshAndSaysWhereItLoads) {
   const auto path = writeTestFile("poly.vtk",
                                   "# vtk DataFile Version 3.0\np\nASCII\nDATASET POLYDATA\nPOINTS 3 double\n"
                                   "0 0 0\n1 0 0\n0 1 0\nPOLYGONS 1 4\n3 0 1 2\n");
+  EXPECT_FALSE(isTetMeshPath(path)) << "mesh-info sends it to the surface loader";
   auto mesh = loadTetMesh(path);
   ASSERT_FALSE(mesh.ok());
-  EXPECT_NE(mesh.error().message.find("poly.vtk"), std::string::npos) << mesh.error().message;
+  EXPECT_NE(mesh.error().message.find("poly.vtk: holds a surface (DATASET POLYDATA)"), std::string::npos)
+      << mesh.error().message;
+}
+
+// VTK prints its errors over several lines with source locations (and logs them to stderr);
+// the adapter makes them one Error line naming the file, and nothing reaches stderr.
+TEST(VolumeBadInput, VtkErrorsBecomeOneLineAndPrintNothing) {
+  const auto truncated = writeTestFile(
+      "truncated.vtk",
+      "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n0 0 0 1\n");
+  const auto notVtk = writeTestFile("garbage.vtk", "this is not a VTK file\n");
+  const auto badXml = writeTestFile("badxml.vtk",
+                                    "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\">"
+                                    "<UnstructuredGrid><Piece></Piece></UnstructuredGrid></VTKFile>\n");
+  for (const auto& path : {truncated, notVtk, badXml}) {
+    testing::internal::CaptureStderr();
+    auto mesh = loadTetMesh(path);
+    const std::string printed = testing::internal::GetCapturedStderr();
+    ASSERT_FALSE(mesh.ok()) << path;
+    const auto& msg = mesh.error().message;
+    EXPECT_EQ(msg.rfind(path.string() + ": ", 0), 0u) << msg;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+    EXPECT_EQ(msg.find("ERROR: In"), std::string::npos) << msg;
+    EXPECT_EQ(msg.find("(0x"), std::string::npos) << msg;
+    EXPECT_EQ(printed, "") << "VTK printed for " << path;
+  }
+}
+
+TEST(VolumeBadInput, XmlContentInAVtkFileIsReadByTheXmlReader) {
+  const auto path = writeTestFile(
+      "xml_in_legacy_name.vtk",
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n<UnstructuredGrid>\n"
+      "<Piece NumberOfPoints=\"5\" NumberOfCells=\"2\">\n<Points><DataArray type=\"Float64\" "
+      "NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0 0 1 0 0 0 1 1 1 1</DataArray></Points>\n"
+      "<Cells><DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">0 1 2 3 1 3 2 4</DataArray>\n"
+      "<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">4 8</DataArray>\n"
+      "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">10 10</DataArray></Cells>\n"
+      "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
+  EXPECT_TRUE(isTetMeshPath(path));
+  auto mesh = loadTetMesh(path);
+  ASSERT_TRUE(mesh.ok()) << mesh.error().message;
+  EXPECT_EQ(mesh->tets.size(), 2u);
+  EXPECT_NEAR(totalVolume(*mesh), 0.5, 1e-12);
+}
+
+TEST(VolumeBadInput, HugePointCountFailsAtOnce) {
+  expectError(
+      "hugepoints.vtk",
+      "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 1000000000000 double\n0 0 0\n",
+      "hugepoints.vtk:5: POINTS declares 1000000000000 points");
 }
 
 TEST(VolumeBadInput, MissingFileAndUnknownExtension) {

@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "openmesh_importer.h"
+#include "repair_mesh.h"
 #include "validate_mesh.h"
 
 namespace tissue::mesh {
@@ -16,7 +17,8 @@ class SeamSplitter {
  public:
   SeamSplitter(SurfaceMesh& out, bool withUvs) : m_out(out), m_withUvs(withUvs) {}
 
-  std::uint32_t vertex(int point, Float3 position, Float2 uv) {
+  /// `point` is the geometric point (a repair's copy has its own), `source` the file's vertex.
+  std::uint32_t vertex(std::uint32_t point, std::uint32_t source, Float3 position, Float2 uv) {
     std::uint64_t key = std::uint64_t(std::uint32_t(point)) << 32;
     if (m_withUvs) {
       // Corners whose UVs are bitwise equal share a render vertex; different UVs mean a seam.
@@ -27,23 +29,23 @@ class SeamSplitter {
       const std::uint64_t uvKey = (std::uint64_t(u) << 32) | v;
       auto [it, inserted] = perPoint.emplace(uvKey, std::uint32_t(m_out.positions.size()));
       if (!inserted) return it->second;
-      push(point, position, uv);
+      push(point, source, position, uv);
       return it->second;
     }
     auto [it, inserted] = m_plain.emplace(key, std::uint32_t(m_out.positions.size()));
-    if (inserted) push(point, position, uv);
+    if (inserted) push(point, source, position, uv);
     return it->second;
   }
 
  private:
-  void push(int point, Float3 position, Float2 uv) {
+  void push(std::uint32_t point, std::uint32_t source, Float3 position, Float2 uv) {
     m_out.positions.push_back(position);
     if (m_withUvs) m_out.uvs.push_back(uv);
     // Geometric vertices are numbered in order of first use, so points no face uses are dropped.
     auto [it, inserted] = m_compact.emplace(std::uint32_t(point), m_out.geometricVertexCount);
     if (inserted) {
       ++m_out.geometricVertexCount;
-      m_out.geometricSourceIndex.push_back(std::uint32_t(point));
+      m_out.geometricSourceIndex.push_back(source);
     }
     m_out.geometricIndex.push_back(it->second);
   }
@@ -74,6 +76,43 @@ Result<UvSource> uvSourceOf(const detail::RawMesh& raw, const std::string& sourc
   return UvSource::None;
 }
 
+/// One warning line per kind of repair made, with its counts.
+void reportRepairs(const detail::TopologyRepairs& r, const std::string& source, LoadReport& rep) {
+  rep.splitNonManifoldEdges = r.nonManifoldEdges;
+  rep.splitBowTieVertices = r.bowTieVertices;
+  rep.flippedFaces = r.flippedFaces;
+  if (r.nonManifoldEdges > 0)
+    rep.warnings.push_back(source + ": split " + std::to_string(r.nonManifoldEdges) +
+                           " non-manifold edges (shared by more than two faces): detached " +
+                           std::to_string(r.detachedFaces) + " faces from them");
+  if (r.bowTieVertices > 0)
+    rep.warnings.push_back(source + ": split " + std::to_string(r.bowTieVertices) +
+                           " bow-tie vertices (joining separate surface sheets); " +
+                           std::to_string(r.addedVertices) + " vertices added by the splits");
+  if (r.flippedFaces > 0)
+    rep.warnings.push_back(source + ": flipped " + std::to_string(r.flippedFaces) +
+                           " faces to orient them consistently with their neighbours");
+}
+
+/// Points no triangle uses: how many, and the first (0-based).
+struct Unused {
+  std::size_t count = 0;
+  std::size_t first = 0;
+};
+Unused countUnused(std::size_t pointCount, const std::vector<Triangle>& tris) {
+  std::vector<char> used(pointCount, 0);
+  for (const auto& tri : tris)
+    for (auto v : tri)
+      used[v] = 1;
+  Unused out;
+  for (std::size_t i = pointCount; i-- > 0;)
+    if (!used[i]) {
+      ++out.count;
+      out.first = i;
+    }
+  return out;
+}
+
 }  // namespace
 
 Result<SurfaceMesh> loadMesh(const std::filesystem::path& path, const LoadOptions& options,
@@ -87,6 +126,7 @@ Result<SurfaceMesh> loadMesh(const std::filesystem::path& path, const LoadOption
     return Error{source + ": scale " + std::to_string(options.scaleToMm) +
                  " mm per unit is invalid; give a positive scale"};
   }
+  rep.warnings.insert(rep.warnings.end(), raw->notes.begin(), raw->notes.end());
   auto uvSource = uvSourceOf(*raw, source);
   if (!uvSource) return uvSource.error();
   if (options.requireUvs && *uvSource == UvSource::None) {
@@ -143,9 +183,25 @@ Result<SurfaceMesh> loadMesh(const std::filesystem::path& path, const LoadOption
     const bool fan = raw->polygons[f].size() > 3;
     return faceName(f) + (fan ? " (triangle " + std::to_string(k) + " of its fan)" : "");
   };
+  // Step 2: lenient repairs (strict leaves the defects to validation, which refuses them).
+  std::vector<std::uint32_t> pointSource(points.size());
+  for (std::size_t i = 0; i < pointSource.size(); ++i)
+    pointSource[i] = std::uint32_t(i);
+  if (!options.strict) reportRepairs(detail::repairTopology(points, pointSource, geoTris), source, rep);
   if (auto ok = detail::validateGeometry(points, geoTris, source, label); !ok) return ok.error();
+  if (auto unused = countUnused(points.size(), geoTris); unused.count > 0) {
+    if (options.strict) {
+      return Error{source + ": vertex " + std::to_string(unused.first + 1) + " (and " +
+                   std::to_string(unused.count - 1) +
+                   " more) is used by no face; remove unused vertices or load without --strict to drop them"};
+    }
+    rep.droppedUnusedVertices = unused.count;
+    rep.warnings.push_back(source + ": dropped " + std::to_string(unused.count) +
+                           " vertices that no face uses (the first is vertex " +
+                           std::to_string(unused.first + 1) + ")");
+  }
 
-  // Step 2: render vertices, split where the UVs of a point differ between faces (seams).
+  // Step 3: render vertices, split where the UVs of a point differ between faces (seams).
   SurfaceMesh mesh;
   SeamSplitter splitter(mesh, *uvSource != UvSource::None);
   mesh.triangles.resize(geoTris.size());
@@ -153,18 +209,19 @@ Result<SurfaceMesh> loadMesh(const std::filesystem::path& path, const LoadOption
     const auto [f, k] = origin[t];
     const std::size_t corners[3] = {0, k, k + 1};
     for (int c = 0; c < 3; ++c) {
-      const int point = int(geoTris[t][c]);
+      const std::uint32_t point = geoTris[t][c];
+      const std::size_t fileVertex = pointSource[point];
       Float2 uv{};
       if (*uvSource == UvSource::Corner) {
         const auto& cuv = raw->cornerUvs[f][corners[c]];
         uv = {cuv[0], cuv[1]};
       } else if (*uvSource == UvSource::Vertex) {
-        uv = {raw->vertexUvs[std::size_t(point)][0], raw->vertexUvs[std::size_t(point)][1]};
+        uv = {raw->vertexUvs[fileVertex][0], raw->vertexUvs[fileVertex][1]};
       }
       if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) {
         return Error{source + ": " + label(t) + " has a non-finite texture coordinate; fix the file's UVs"};
       }
-      mesh.triangles[t][c] = splitter.vertex(point, points[std::size_t(point)], uv);
+      mesh.triangles[t][c] = splitter.vertex(point, std::uint32_t(fileVertex), points[point], uv);
     }
   }
   if (rep.droppedZeroAreaFaces > 1)

@@ -1,13 +1,17 @@
 // OpenMesh adapter, reading half (see openmesh_importer.h for why a raw importer).
 #include "openmesh_importer.h"
 
+#include "tissue/volume/vtk_surface.h"
+
 #include <OpenMesh/Core/IO/IOManager.hh>
 #include <OpenMesh/Core/IO/importer/BaseImporter.hh>
 #include <algorithm>
 #include <cctype>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <string_view>
 
 namespace tissue::mesh::detail {
 namespace {
@@ -159,6 +163,76 @@ Result<void> scanTextForNonFinite(const std::filesystem::path& path, const std::
   return {};
 }
 
+/// Bounded memory on bad input: the counts an OFF or binary STL header declares are checked
+/// against the file size before a reader allocates for them, so a header declaring 10^12
+/// vertices fails at once. Each OFF vertex or face takes at least 5 bytes ("0 0 0", binary:
+/// 12); each binary STL triangle exactly 50 after the 84-byte header.
+Result<void> checkDeclaredCounts(const std::filesystem::path& path, const std::string& ext) {
+  std::error_code ec;
+  const auto size = std::uint64_t(std::filesystem::file_size(path, ec));
+  if (ec) return {};
+  std::ifstream in(path, std::ios::binary);
+  if (ext == ".stl") {
+    char head[84] = {};
+    if (!in.read(head, 84)) return {};
+    std::uint32_t n = 0;
+    std::memcpy(&n, head + 80, 4);  // little-endian, as the format says
+    if (std::uint64_t(84) + 50ull * n == size) return {};
+    if (std::string_view(head, 5) == "solid") return {};  // ASCII STL
+    return Error{path.string() + ": binary STL header declares " + std::to_string(n) +
+                 " triangles, but the file has room for " + std::to_string(size < 84 ? 0 : (size - 84) / 50) +
+                 "; the file is truncated or not an STL"};
+  }
+  // OFF: the first line with content after the "OFF" keyword holds "vertices faces edges".
+  std::string line;
+  std::getline(in, line);
+  const bool keywordOnly = line.find_first_of("0123456789") == std::string::npos;
+  if (keywordOnly) {
+    while (std::getline(in, line)) {
+      const auto start = line.find_first_not_of(" \t\r");
+      if (start != std::string::npos && line[start] != '#') break;
+    }
+  } else {
+    line = line.substr(line.find_first_of("0123456789"));
+  }
+  std::istringstream counts(line);
+  double vertices = 0, faces = 0;
+  if (!(counts >> vertices >> faces)) return {};  // OpenMesh's reader reports the bad header
+  if (vertices < 0 || faces < 0 || (vertices + faces) * 5.0 > double(size)) {
+    return Error{path.string() + ": the OFF header declares " + std::to_string(std::int64_t(vertices)) +
+                 " vertices and " + std::to_string(std::int64_t(faces)) + " faces, more than a " +
+                 std::to_string(size) + "-byte file can hold; fix the counts on the header line"};
+  }
+  return {};
+}
+
+/// A VTK surface (legacy POLYDATA or XML PolyData, read by the volume module's VTK adapter).
+Result<RawMesh> readVtk(const std::filesystem::path& path) {
+  auto surface = volume::readVtkSurface(path);
+  if (!surface) return surface.error();
+  RawMesh raw;
+  raw.points.reserve(surface->points.size());
+  for (const auto& p : surface->points)
+    raw.points.push_back({float(p[0]), float(p[1]), float(p[2])});
+  // Ids beyond int become -1, which the loader reports as out of range.
+  const auto toInts = [](const std::vector<std::int64_t>& cell) {
+    std::vector<int> out(cell.size());
+    std::transform(cell.begin(), cell.end(), out.begin(),
+                   [](std::int64_t id) { return id >= 0 && id <= 2147483647 ? int(id) : -1; });
+    return out;
+  };
+  for (const auto& cell : surface->polygons) {
+    raw.polygons.push_back(toInts(cell));
+    raw.cornerUvs.emplace_back();
+  }
+  for (const auto& strip : surface->strips)
+    appendStripTriangles(toInts(strip), 0, raw);
+  if (surface->ignoredCells > 0)
+    raw.notes.push_back(path.string() + ": ignored " + std::to_string(surface->ignoredCells) +
+                        " VERTICES and LINES cells (a surface mesh keeps POLYGONS and TRIANGLE_STRIPS)");
+  return raw;
+}
+
 }  // namespace
 
 Result<RawMesh> readRawMesh(const std::filesystem::path& path) {
@@ -168,12 +242,15 @@ Result<RawMesh> readRawMesh(const std::filesystem::path& path) {
   }
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl") {
+  if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl" && ext != ".vtk" && ext != ".vtp") {
     return Error{"cannot read mesh '" + path.string() + "': unsupported extension '" + ext +
-                 "'; give an .obj, .ply, .off or .stl file"};
+                 "'; give an .obj, .ply, .off, .stl or VTK surface (.vtk POLYDATA, .vtp) file"};
   }
   if (ext == ".obj") return readObj(path);
+  if (ext == ".vtk" || ext == ".vtp") return readVtk(path);
   if (auto scan = scanTextForNonFinite(path, ext); !scan) return scan.error();
+  if (ext == ".ply") return readPly(path);
+  if (auto counts = checkDeclaredCounts(path, ext); !counts) return counts.error();
   RawMesh raw;
   RawImporter importer(raw);
   OpenMesh::IO::Options options = OpenMesh::IO::Options::FaceTexCoord | OpenMesh::IO::Options::VertexTexCoord;

@@ -1,11 +1,17 @@
 // loadTetMesh: picks the reader by extension, then validates what it read.
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <string>
+#include <string_view>
 
 #include "raw_volume.h"
 #include "tissue/volume/tet_mesh.h"
+#include "tissue/volume/vtk_surface.h"
 
 namespace tissue::volume {
 namespace {
@@ -101,9 +107,150 @@ Result<TetMesh> validate(const detail::RawVolume& raw, const std::string& where,
 
 }  // namespace
 
+namespace detail {
+
+VtkContent sniffVtk(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(head.data(), std::streamsize(head.size()));
+  head.resize(std::size_t(in.gcount()));
+  const auto first = head.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos) return VtkContent::Unknown;
+  if (head[first] == '<') {
+    const auto type = head.find("type=\"");
+    if (type == std::string::npos) return VtkContent::Unknown;
+    const std::string value = head.substr(type + 6, head.find('"', type + 6) - (type + 6));
+    if (value == "UnstructuredGrid") return VtkContent::XmlGrid;
+    if (value == "PolyData") return VtkContent::XmlSurface;
+    return VtkContent::Unknown;
+  }
+  std::string upper(head.size(), ' ');
+  std::transform(head.begin(), head.end(), upper.begin(),
+                 [](unsigned char c) { return char(std::toupper(c)); });
+  const auto dataset = upper.find("\nDATASET");
+  if (dataset == std::string::npos) return VtkContent::Unknown;
+  std::string kind = upper.substr(dataset + 9, upper.find('\n', dataset + 1) - (dataset + 9));
+  kind.erase(0, kind.find_first_not_of(" \t"));
+  kind.erase(kind.find_last_not_of(" \t\r") + 1);
+  if (kind == "POLYDATA") return VtkContent::LegacySurface;
+  if (kind == "UNSTRUCTURED_GRID") return VtkContent::LegacyGrid;
+  return VtkContent::Unknown;
+}
+
+namespace {
+
+bool isInteger(std::string_view token) {
+  long long v = 0;
+  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), v);
+  return ec == std::errc() && end == token.data() + token.size();
+}
+
+/// Text legacy VTK: each cell section must hold the integers its header declares. VTK 9.1's
+/// vtkPolyDataReader crashes (a null stream after it closes the file) on a cell section that
+/// ends early or holds a non-number, so the sections are counted before VTK reads the file.
+Result<void> checkTextCellSections(const std::filesystem::path& path, const std::string& text) {
+  std::size_t pos = 0, line = 1;
+  const auto next = [&]() -> std::string_view {
+    while (pos < text.size() && std::isspace(static_cast<unsigned char>(text[pos])))
+      line += text[pos++] == '\n' ? 1 : 0;
+    const std::size_t start = pos;
+    while (pos < text.size() && !std::isspace(static_cast<unsigned char>(text[pos])))
+      ++pos;
+    return std::string_view(text).substr(start, pos - start);
+  };
+  const auto needIntegers = [&](std::uint64_t n, const std::string& section, std::size_t at) -> Result<void> {
+    for (std::uint64_t k = 0; k < n; ++k) {
+      const auto token = next();
+      if (!isInteger(token))
+        return Error{path.string() + ":" + std::to_string(at) + ": " + section + " declares " +
+                     std::to_string(n) + " integers, but entry " + std::to_string(k + 1) +
+                     (token.empty() ? " is past the end of the file" : " is '" + std::string(token) + "'") +
+                     "; the file is truncated or damaged"};
+    }
+    return {};
+  };
+  for (auto token = next(); !token.empty(); token = next()) {
+    const bool cells = token == "VERTICES" || token == "LINES" || token == "POLYGONS" ||
+                       token == "TRIANGLE_STRIPS" || token == "CELLS";
+    if (!cells && token != "CELL_TYPES") continue;
+    const std::string section(token);
+    const std::size_t at = line;
+    const auto first = next();
+    long long a = 0, b = 0;
+    if (!isInteger(first) || (a = std::stoll(std::string(first))) < 0) continue;  // VTK reports it
+    if (section == "CELL_TYPES") {
+      if (auto ok = needIntegers(std::uint64_t(a), section, at); !ok) return ok;
+      continue;
+    }
+    const auto second = next();
+    if (!isInteger(second) || (b = std::stoll(std::string(second))) < 0) continue;
+    const std::size_t save = pos, saveLine = line;
+    if (next() == "OFFSETS") {  // the version 5 layout: OFFSETS type, a ints, CONNECTIVITY type, b ints
+      next();
+      if (auto ok = needIntegers(std::uint64_t(a), section + " OFFSETS", at); !ok) return ok;
+      if (next() != "CONNECTIVITY") continue;  // VTK reports it
+      next();
+      if (auto ok = needIntegers(std::uint64_t(b), section + " CONNECTIVITY", at); !ok) return ok;
+      continue;
+    }
+    pos = save;
+    line = saveLine;
+    if (auto ok = needIntegers(std::uint64_t(b), section, at); !ok) return ok;
+  }
+  return {};
+}
+
+}  // namespace
+
+Result<void> checkLegacyVtkCounts(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto size = std::uint64_t(std::filesystem::file_size(path, ec));
+  if (ec) return {};
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  bool ascii = false;
+  for (int k = 0; k < 8 && std::getline(in, line); ++k) {
+    if (k == 2) ascii = line.rfind("ASCII", 0) == 0;
+    if (line.rfind("POINTS", 0) != 0) continue;
+    double n = 0;
+    if (std::sscanf(line.c_str() + 6, "%lf", &n) != 1) return {};
+    // Each point takes at least 6 bytes as text ("0 0 0 ") and 12 in binary floats.
+    if (n < 0 || n * 6.0 > double(size))
+      return Error{path.string() + ":" + std::to_string(k + 1) + ": POINTS declares " +
+                   std::to_string(std::uint64_t(std::max(0.0, n))) + " points, more than a " +
+                   std::to_string(size) + "-byte file can hold; fix the count or the truncated file"};
+    break;
+  }
+  if (!ascii) return {};
+  in.clear();
+  in.seekg(0);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return checkTextCellSections(path, text);
+}
+
+}  // namespace detail
+
+bool isVtkSurfacePath(const std::filesystem::path& path) {
+  const std::string ext = lowerExtension(path);
+  if (ext == ".vtp") return true;
+  if (ext != ".vtk") return false;
+  const auto content = detail::sniffVtk(path);
+  return content == detail::VtkContent::LegacySurface || content == detail::VtkContent::XmlSurface;
+}
+
+Result<VtkSurface> readVtkSurface(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    return Error{path.string() + ": no such file; check the path"};
+  const bool xml = lowerExtension(path) == ".vtp" || detail::sniffVtk(path) == detail::VtkContent::XmlSurface;
+  if (!xml)
+    if (auto counts = detail::checkLegacyVtkCounts(path); !counts) return counts.error();
+  return detail::readVtkPolyData(path, xml);
+}
+
 bool isTetMeshPath(const std::filesystem::path& path) {
   const std::string ext = lowerExtension(path);
-  return ext == ".vtk" || ext == ".vtu" || ext == ".msh";
+  return (ext == ".vtk" && !isVtkSurfacePath(path)) || ext == ".vtu" || ext == ".msh";
 }
 
 Result<TetMesh> loadTetMesh(const std::filesystem::path& path, const TetLoadOptions& options,
@@ -112,9 +259,17 @@ Result<TetMesh> loadTetMesh(const std::filesystem::path& path, const TetLoadOpti
     return Error{path.string() + ": the scale must be a positive number of mm per file unit"};
   const std::string ext = lowerExtension(path);
   Result<detail::RawVolume> raw = Error{""};
-  if (ext == ".vtk")
+  const auto content = ext == ".vtk" ? detail::sniffVtk(path) : detail::VtkContent::Unknown;
+  if (content == detail::VtkContent::LegacySurface || content == detail::VtkContent::XmlSurface)
+    return Error{path.string() + ": holds a surface (" +
+                 (content == detail::VtkContent::XmlSurface ? "VTK XML PolyData" : "DATASET POLYDATA") +
+                 "), not tetrahedra; load it as a surface mesh (tissue-sim mesh-info reads it as one)"};
+  if (content == detail::VtkContent::XmlGrid)
+    raw = detail::readVtu(path);  // XML content under a .vtk name: VTK's XML reader reads it
+  else if (ext == ".vtk") {
+    if (auto counts = detail::checkLegacyVtkCounts(path); !counts) return counts.error();
     raw = detail::readLegacyVtk(path);
-  else if (ext == ".vtu")
+  } else if (ext == ".vtu")
     raw = detail::readVtu(path);
   else if (ext == ".msh")
     raw = detail::readGmsh(path);

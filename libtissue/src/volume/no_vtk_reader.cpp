@@ -24,4 +24,11 @@ Result<RawVolume> readVtu(const std::filesystem::path& path) {
   return builtWithoutVtk(path);
 }
 
+Result<VtkSurface> readVtkPolyData(const std::filesystem::path& path, bool) {
+  return Error{path.string() +
+               ": built without VTK (TISSUE_WITH_VTK=OFF); convert the surface to .ply or .obj (e.g. `meshio "
+               "convert " +
+               path.filename().string() + " mesh.ply`) or rebuild with VTK"};
+}
+
 }  // namespace tissue::volume::detail

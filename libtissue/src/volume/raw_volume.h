@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tissue/core/result.h"
+#include "tissue/volume/vtk_surface.h"
 
 namespace tissue::volume::detail {
 
@@ -24,10 +25,22 @@ struct RawVolume {
   std::size_t ignoredCells = 0;  ///< cells that are not 4-node tets
 };
 
+/// What a .vtk file holds, from its first bytes: a legacy DATASET line, or XML content (which
+/// VTK's legacy reader refuses as "Unrecognized file type").
+enum class VtkContent { LegacyGrid, LegacySurface, XmlGrid, XmlSurface, Unknown };
+VtkContent sniffVtk(const std::filesystem::path& path);
+
+/// Bounded memory and VTK's own robustness: the POINTS count of a legacy .vtk header against
+/// the file size, and (text files) each cell section's declared integers, before VTK reads it.
+Result<void> checkLegacyVtkCounts(const std::filesystem::path& path);
+
 /// Legacy VTK unstructured grid (.vtk) through vtkUnstructuredGridReader.
 Result<RawVolume> readLegacyVtk(const std::filesystem::path& path);
 /// VTK XML unstructured grid (.vtu) through vtkXMLUnstructuredGridReader.
 Result<RawVolume> readVtu(const std::filesystem::path& path);
+/// A VTK surface: legacy POLYDATA (vtkPolyDataReader) or, when `xml`, VTK XML PolyData
+/// (vtkXMLPolyDataReader).
+Result<VtkSurface> readVtkPolyData(const std::filesystem::path& path, bool xml);
 /// Gmsh .msh, ASCII v1 ($NOD/$ELM), v2 and v4.1 ($Nodes/$Elements).
 Result<RawVolume> readGmsh(const std::filesystem::path& path);
 

@@ -35,7 +35,11 @@ struct TetLoadReport {
 };
 
 /// Loads `path`: .vtk (legacy VTK unstructured grid), .vtu (VTK XML unstructured grid) or .msh
-/// (Gmsh ASCII v1, v2 or v4.1). Only 4-node tets are kept; other cells are counted in `report`.
+/// (Gmsh v1, v2 or v4.1, ASCII or binary). A .vtk file with XML content (VTK XML unstructured
+/// grid) is read by VTK's XML reader; one that holds a surface (POLYDATA) is an Error pointing to
+/// the surface loader. VTK's own messages become one Error line naming the file. Declared counts
+/// are checked against the file size before anything is allocated for them.
+/// Only 4-node tets are kept; other cells are counted in `report`.
 /// Fails, naming the file and the element (1-based, in file order), on non-finite coordinates,
 /// indices out of range, a tet repeating a vertex, a degenerate (zero-volume) tet, or no tets.
 /// Inverted tets are re-oriented (two vertices swapped) and counted. A library built without VTK
@@ -44,7 +48,9 @@ struct TetLoadReport {
 Result<TetMesh> loadTetMesh(const std::filesystem::path& path, const TetLoadOptions& options = {},
                             TetLoadReport* report = nullptr);
 
-/// True when `path` has an extension loadTetMesh reads (.vtk, .vtu, .msh).
+/// True when `path` has an extension loadTetMesh reads (.vtk, .vtu, .msh), except a .vtk file
+/// whose header says it holds a surface (see isVtkSurfacePath in vtk_surface.h): that one goes to
+/// the surface loader.
 bool isTetMeshPath(const std::filesystem::path& path);
 
 /// Signed volume of tet `t` in mm^3: det(b - a, c - a, d - a) / 6.
