@@ -16,7 +16,9 @@ Error builtWithoutVtk(const std::filesystem::path& path, const char* what) {
 
 }  // namespace
 
-bool builtWithVtk() { return false; }
+bool builtWithVtk() {
+  return false;
+}
 
 Result<void> writeVtp(const std::filesystem::path& path, std::span<const Float3>, std::span<const Triangle>,
                       const std::vector<VertexField>&) {

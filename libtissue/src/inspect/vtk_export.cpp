@@ -13,7 +13,9 @@
 
 namespace tissue::inspect {
 
-bool builtWithVtk() { return true; }
+bool builtWithVtk() {
+  return true;
+}
 
 Result<void> writeVtp(const std::filesystem::path& path, std::span<const Float3> positions,
                       std::span<const Triangle> triangles, const std::vector<VertexField>& fields) {

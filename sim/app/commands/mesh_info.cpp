@@ -55,7 +55,8 @@ void registerMeshInfoCommand(CLI::App& app, const GlobalOptions& global, int& ex
   cmd->add_option("file", opts->file, "mesh file")->required();
   cmd->add_option("--scale", opts->scale, "mm per file unit (default 1)");
   cmd->add_flag("--strict", opts->strict,
-                "zero-area faces and line elements are errors instead of being dropped");
+                "refuse what lenient mode repairs or drops (misoriented faces, non-manifold edges, bow-tie "
+                "and unused vertices, zero-area faces, line elements)");
   cmd->callback([opts, &global, &exitCode] {
     if (volume::isTetMeshPath(opts->file)) {
       exitCode = describeVolume(global, opts->file, opts->scale);
