@@ -138,7 +138,9 @@ Result<LinearStaticResult> solveLinearStatic(const SpringNetwork& network, std::
 }
 
 std::vector<Tet> gridTets(std::array<int, 3> cells, CubeSplit split) {
-  const auto [nx, ny, nz] = cells;
+  // Plain variables, not a structured binding: lambdas capturing bindings need C++20 support that
+  // clang 14 (the fuzz and sanitizer trees' compiler) lacks.
+  const int nx = cells[0], ny = cells[1], nz = cells[2];
   // Corners by bits: 1 = +x, 2 = +y, 4 = +z.
   static constexpr int kFiveEven[5][4] = {
       {1, 2, 4, 7}, {0, 1, 2, 4}, {3, 1, 2, 7}, {5, 1, 4, 7}, {6, 2, 4, 7}};
