@@ -1,6 +1,11 @@
 // The stb adapter: stb_image and stb_image_write are used here and nowhere else.
 #include <algorithm>
 #include <cstring>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <span>
+#include <string>
 
 #include "tissue/core/atomic_file.h"
 #include "tissue/core/image.h"
@@ -46,9 +51,45 @@ Result<void> writePng(const std::filesystem::path& path, const Image8& image) {
   return writeFileAtomic(path, png);
 }
 
+namespace {
+
+std::uint32_t bigEndian32(const std::uint8_t* p) {
+  return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | p[3];
+}
+
+/// A PNG's chunk lengths against the file's size, before stb sees it: stb_image (Debian's 2.x)
+/// adds a chunk's declared length to its read pointer before comparing, which is undefined
+/// behaviour for a length past the end (found by the PNG fuzz target under UBSan).
+Result<void> checkPngChunks(const std::filesystem::path& path, std::span<const std::uint8_t> bytes) {
+  static constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (bytes.size() < 8 || !std::equal(kSignature, kSignature + 8, bytes.begin())) return {};  // not a PNG
+  std::size_t at = 8;
+  for (int chunk = 1; at + 12 <= bytes.size(); ++chunk) {
+    const std::uint32_t length = bigEndian32(bytes.data() + at);
+    if (length > bytes.size() - at - 12)
+      return Error{"cannot read image '" + path.string() + "': PNG chunk " + std::to_string(chunk) +
+                   " declares " + std::to_string(length) +
+                   " bytes, more than the file holds; the file is truncated or damaged"};
+    if (std::equal(bytes.begin() + std::ptrdiff_t(at + 4), bytes.begin() + std::ptrdiff_t(at + 8), "IEND"))
+      return {};
+    at += 12 + length;
+  }
+  return Error{"cannot read image '" + path.string() +
+               "': the PNG ends before its IEND chunk; the file is truncated"};
+}
+
+}  // namespace
+
 Result<Image8> readImage(const std::filesystem::path& path, int forceChannels) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Error{"cannot read image '" + path.string() + "': cannot open it; check the path"};
+  const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
+                                        std::istreambuf_iterator<char>());
+  if (auto ok = checkPngChunks(path, bytes); !ok) return ok.error();
+  if (bytes.size() > std::size_t(std::numeric_limits<int>::max()))
+    return Error{"cannot read image '" + path.string() + "': larger than 2 GiB"};
   int w = 0, h = 0, c = 0;
-  stbi_uc* data = stbi_load(path.c_str(), &w, &h, &c, forceChannels);
+  stbi_uc* data = stbi_load_from_memory(bytes.data(), int(bytes.size()), &w, &h, &c, forceChannels);
   if (!data) {
     return Error{"cannot read image '" + path.string() + "': " + stbi_failure_reason() +
                  "; give a PNG, JPEG or TGA file"};
