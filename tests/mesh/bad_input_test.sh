@@ -11,10 +11,12 @@ printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n' > "$dir/degenerate.off"
 printf 'OFF\n1000000000000 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' > "$dir/huge.off"
 # The counts split over lines, one beyond 2^64 (found by the OFF fuzz target: it ran out of memory).
 printf 'OFF\n 66666666666666666661\n3\n3 03' > "$dir/split.off"
+# A negative element count (found by the PLY fuzz target: it wrapped to 2^64 - 4 and looped).
+printf 'ply\nformat ascii 1.0\nelement vert -4\nend_header\n0 0 0\n' > "$dir/negative.ply"
 printf '# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 4 float\n0 0 0\n' > "$dir/truncated.vtk"
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nf 1 2 3\nf 2 3 4\nf 2 5 4\n' > "$dir/flip.obj"
 status=0
-for f in nan.obj range.obj degenerate.off missing.obj huge.off split.off truncated.vtk "flip.obj --strict"; do
+for f in nan.obj range.obj degenerate.off missing.obj huge.off split.off negative.ply truncated.vtk "flip.obj --strict"; do
   # shellcheck disable=SC2086 # "flip.obj --strict" is a file and a flag
   set -- $f; f=$1; shift
   timeout 20 "$sim" mesh-info "$dir/$f" "$@" >"$dir/out.txt" 2>"$dir/err.txt"; rc=$?
