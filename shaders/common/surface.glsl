@@ -25,14 +25,20 @@ layout(location = 0) out vec4 o_radiance;
 layout(location = 1) out vec4 o_diffuse;
 layout(location = 2) out vec4 o_position;
 
+// The interpolated vertex normal, on the side the camera sees: a back face (drawn only for a
+// double-sided object, render::SceneObject::doubleSided) shades with the normal negated.
+vec3 geometricNormal() { return gl_FrontFacing ? normalize(v_normal) : -normalize(v_normal); }
+
 // The shading normal: the normal map through the TBN frame, or the interpolated vertex normal.
+// On a back face the whole perturbed normal is negated: the back of a displaced sheet, whose
+// bumps are the front's dents (flipping only N in the TBN frame would mirror the bumps instead).
 vec3 surfaceNormal() {
   vec3 N = normalize(v_normal);
 #ifdef TISSUE_NORMAL_MAP
   vec3 tangentNormal = texture(u_normalMap, v_uv).xyz * 2.0 - 1.0;
   N = perturbNormal(N, v_tangent, tangentNormal);
 #endif
-  return N;
+  return gl_FrontFacing ? N : -N;
 }
 
 vec3 surfaceAlbedo() { return srgbToLinear(texture(u_baseColor, v_uv).rgb); }

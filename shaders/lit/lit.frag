@@ -9,7 +9,7 @@
 
 void main() {
   vec3 N = surfaceNormal();
-  vec3 Ng = normalize(v_normal);
+  vec3 Ng = geometricNormal();
   vec3 albedo = surfaceAlbedo();
   vec3 V = normalize(u_cameraPosition - v_worldPosition);
   vec3 color = u_ambient * albedo;

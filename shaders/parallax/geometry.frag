@@ -55,7 +55,7 @@ void main() {
   vec3 dPdv = dPdx * Ji[1][0] + dPdy * Ji[1][1];
 
   vec3 P = v_worldPosition;
-  vec3 Ng = normalize(v_normal);
+  vec3 Ng = geometricNormal();
   vec3 N = surfaceNormal();
   vec3 V = normalize(u_cameraPosition - P);
   // The orthonormal tangent frame (as common/normal_mapping.glsl).

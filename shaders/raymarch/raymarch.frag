@@ -36,7 +36,12 @@ int adaptiveSamples(inout Frame f) {
 }
 
 void main() {
-  Frame f = makeFrame(v_worldPosition, u_cameraPosition - v_worldPosition, v_normal, v_tangent, v_plane, v_uv);
+  // A back face (a double-sided object, render::SceneObject::doubleSided) marches into the sheet
+  // from its back: the surface normal and the local plane's normal are negated (the plane then
+  // lies d below the back, eq. 14), as common/surface.glsl negates the shading normal.
+  float facing = gl_FrontFacing ? 1.0 : -1.0;
+  Frame f = makeFrame(v_worldPosition, u_cameraPosition - v_worldPosition, facing * v_normal, v_tangent,
+                      vec4(facing * v_plane.xyz, v_plane.w), v_uv);
 #ifdef TISSUE_ADAPTIVE
   int n = adaptiveSamples(f);
 #else

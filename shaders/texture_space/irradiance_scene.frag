@@ -23,6 +23,7 @@ uniform sampler2D u_baseColor; // sRGB albedo
 uniform sampler2D u_normalMap; // tangent-space normals
 uniform float u_albedoPreScatter;  // p
 uniform vec3 u_ambient;        // linear RGB irradiance added everywhere
+uniform int u_twoSided;        // 1: a double-sided object, lit on the side the camera sees
 
 layout(location = 0) out vec4 o_irradiance;  // rgb: albedo^p E; a: 1 visible, 0 culled (or not drawn)
 layout(location = 1) out vec4 o_stretch;     // r, g: |dP/du|, |dP/dv| mm per UV unit; b: sqrt(|dP/du x dP/dv|) mm
@@ -38,7 +39,10 @@ void main() {
   // Visibility also goes to depth (0 visible, 1 culled): the blur passes skip culled and empty
   // texels by an early depth test, which saves work where a shader branch would not.
   gl_FragDepth = 0.0;
-  if (u_cull == 1 && v_eyeDot < u_cullCosine) {  // Listing 2: occluded
+  // A double-sided object: one of a texel's two sides always faces the camera, so nothing is
+  // culled, and the texel is lit on the side seen (the final pass negates back-face normals too).
+  bool back = u_twoSided == 1 && v_eyeDot < 0.0;
+  if (u_cull == 1 && u_twoSided == 0 && v_eyeDot < u_cullCosine) {  // Listing 2: occluded
     o_irradiance = vec4(0.0);
     gl_FragDepth = 1.0;
     return;
@@ -48,6 +52,10 @@ void main() {
 #ifdef TISSUE_NORMAL_MAP
   N = perturbNormal(Ng, v_tangent, texture(u_normalMap, v_uv).xyz * 2.0 - 1.0);
 #endif
+  if (back) {  // as common/surface.glsl's surfaceNormal on a back face
+    Ng = -Ng;
+    N = -N;
+  }
   vec3 E = u_ambient;
   for (int i = 0; i < u_lightCount; ++i) {
     vec3 L = lightDirection(i, v_worldPosition);

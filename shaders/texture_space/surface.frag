@@ -15,7 +15,7 @@ uniform float u_albedoPreScatter;   // p
 
 void main() {
   vec3 N = surfaceNormal();
-  vec3 Ng = normalize(v_normal);
+  vec3 Ng = geometricNormal();
   vec3 V = normalize(u_cameraPosition - v_worldPosition);
   // Dividing by the filtered coverage keeps gutter texels out of the bilinear lookup.
   vec4 m = texture(u_diffused, v_uv * u_mapScale);

@@ -182,4 +182,11 @@ Mat4 hostViewProjection(const render::Camera& c, float aspect) {
   return out;
 }
 
+std::string methodTestName(render::ShadingMethod method) {
+  std::string name(render::shadingMethodName(method));
+  for (char& c : name)
+    if (c == '-') c = '_';
+  return name;
+}
+
 }  // namespace tissue::test

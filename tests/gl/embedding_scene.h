@@ -3,6 +3,7 @@
 // procedural sphere with planes and textures, and a host's own flat-colour drawing (a program,
 // a vertex array, a quad) for tests that play the host application.
 #include <array>
+#include <string>
 #include <vector>
 
 #include "test_scene.h"
@@ -14,6 +15,9 @@ namespace tissue::test {
 inline constexpr render::ShadingMethod kAllMethods[] = {
     render::ShadingMethod::Lit, render::ShadingMethod::Separable, render::ShadingMethod::TextureSpace,
     render::ShadingMethod::RayMarch, render::ShadingMethod::Parallax};
+
+/// `method`'s name as a gtest parameter name ("ray-march" -> "ray_march").
+std::string methodTestName(render::ShadingMethod method);
 
 /// A UV sphere with local planes (N_S, d mm) per vertex for the ray march: N_S tilted from the
 /// normal toward the tangent, d = 0.3 mm, so that transforming them is a real test.

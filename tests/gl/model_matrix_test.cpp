@@ -148,14 +148,8 @@ TEST_P(ModelMatrixTest, MatchesTheMeshPreTransformedOnTheCpu) {
   }
 }
 
-std::string methodParamName(const ::testing::TestParamInfo<render::ShadingMethod>& param) {
-  std::string name(render::shadingMethodName(param.param));
-  for (char& c : name)
-    if (c == '-') c = '_';
-  return name;
-}
-
-INSTANTIATE_TEST_SUITE_P(Methods, ModelMatrixTest, ::testing::ValuesIn(kAllMethods), methodParamName);
+INSTANTIATE_TEST_SUITE_P(Methods, ModelMatrixTest, ::testing::ValuesIn(kAllMethods),
+                         [](const auto& p) { return methodTestName(p.param); });
 
 TEST(ModelMatrixErrorTest, MirroredSingularProjectiveAndNonFiniteModelsAreErrors) {
   auto contextResult = createContext(Backend::Egl);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "tissue/scene/scene.h"
 
@@ -152,6 +153,47 @@ TEST(Scene, BadInputNamesTheFileOrTheArgument) {
   const Mat4 projective{1, 0, 0, 0.5f, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   EXPECT_FALSE(scene.setTransform(*organ, projective).ok());
   EXPECT_FALSE(scene.renderImage(0, 10).ok());
+}
+
+TEST(Scene, AnOpenSurfaceRendersFromBothSides) {
+  // A 60 mm square patch (an open surface, facing +z) seen from behind must not vanish: the scene
+  // draws organs with boundary edges double-sided (issue 14; render::SceneObject::doubleSided).
+  const auto dir = std::filesystem::path(TISSUE_TEST_OUTPUT_DIR) / "scene";
+  std::filesystem::create_directories(dir);
+  const auto path = dir / "open_patch.obj";
+  {
+    std::FILE* f = std::fopen(path.string().c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    const int n = 10;
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) {
+        std::fprintf(f, "v %g %g 0\n", 6.0 * i - 30.0, 6.0 * j - 30.0);
+        std::fprintf(f, "vt %g %g\n", double(i) / n, double(j) / n);
+      }
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const int a = j * (n + 1) + i + 1, b = a + 1, c = a + n + 2, d = a + n + 1;
+        std::fprintf(f, "f %d/%d %d/%d %d/%d\nf %d/%d %d/%d %d/%d\n", a, a, b, b, c, c, a, a, c, c, d, d);
+      }
+    std::fclose(f);
+  }
+  for (const float side : {1.0f, -1.0f}) {
+    Scene scene = makeScene();
+    OrganDesc d;
+    d.mesh = path;
+    d.material = kData / "materials" / "liver.json";
+    ASSERT_TRUE(scene.addOrgan(d).ok());
+    render::Camera camera;
+    camera.eye = {0.0f, -10.0f, 150.0f * side};
+    camera.target = {0.0f, 0.0f, 0.0f};
+    scene.setCamera(camera);
+    render::Scene& lit = scene.renderScene();  // the lights stop following the framing
+    lit.lights.resize(1);
+    lit.lights[0].positionMm = {40.0f, 80.0f, 250.0f * side};
+    auto image = scene.renderImage(96, 96);
+    ASSERT_TRUE(image.ok()) << image.error().message;
+    EXPECT_GT(coveredPixels(*image), 96u * 96u / 4) << (side > 0 ? "front" : "back");
+  }
 }
 
 TEST(Scene, AHostShapesAStaticOrganAndTheImageFollows) {

@@ -72,6 +72,7 @@ struct Scene::Impl {
     render::MeshHandle mesh;                       ///< static organs (a loop holds its own)
     double pendingS = 0.0;                         ///< s, time not yet simulated
     bool changed = false;                          ///< stepped since the last upload
+    bool openSurface = false;                      ///< the surface has boundary edges: drawn double-sided
   };
   std::vector<Organ> organs;
 
@@ -122,6 +123,7 @@ struct Scene::Impl {
     for (const Organ& o : organs) {
       render::SceneObject object = organObject(o.loop ? o.loop->meshHandle() : o.mesh, o.textures, o.method);
       object.model = o.model;
+      object.doubleSided = o.openSurface;
       // The ray march's texture units per mm are world values (render::SceneObject::model).
       if (auto* march = std::get_if<render::RayMarchSettings>(&object.method))
         march->uvPerMm /= uniformScaleOf(o.model);
@@ -200,6 +202,8 @@ Result<OrganId> Scene::addOrgan(const OrganDesc& desc) {
     organ.still.emplace(std::move(*still));
   }
   organ.choices = desc.methods.value_or(s.settings.methods);
+  // An open surface (a patch, a cut organ) must not vanish when seen from behind (issue 14).
+  organ.openSurface = !(organ.loop ? organ.loop->surface() : *organ.still).boundaryVertices().empty();
   if (!s.renderer) {  // simulation only
     s.organs.push_back(std::move(organ));
     return s.organs.size() - 1;

@@ -91,6 +91,10 @@ struct SceneObject {
   /// Object space -> world space, mm, column-major (OpenGL's layout: model[col * 4 + row], the
   /// translation in model[12..14]); default identity. See above for what is supported.
   std::array<float, 16> model = kIdentityModel;
+  /// Draw both faces (no back-face culling for this object; the back faces shade with the normal
+  /// negated). For open surfaces (a patch, a cut organ), which would otherwise vanish when seen
+  /// from behind. Closed meshes leave it off: culling halves their fragment work.
+  bool doubleSided = false;
 };
 
 /// Everything besides the uploaded meshes and textures that one frame needs.

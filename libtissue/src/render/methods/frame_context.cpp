@@ -57,7 +57,11 @@ void drawSurface(const FrameContext& frame, GLuint program, const ObjectDraw& dr
   g.ActiveTexture(GL_TEXTURE0 + kUnitNormalMap);
   g.BindTexture(GL_TEXTURE_2D, draw.normalMap);
   g.BindVertexArray(draw.mesh->vertexArray());
+  // The geometry pass culls back faces (beginGeometryPass); a double-sided object draws both, and
+  // its shaders negate the normal of back faces (common/surface.glsl, geometricNormal).
+  if (draw.object->doubleSided) g.Disable(GL_CULL_FACE);
   g.DrawElements(GL_TRIANGLES, draw.mesh->indexCount(), GL_UNSIGNED_INT, nullptr);
+  if (draw.object->doubleSided) g.Enable(GL_CULL_FACE);
 }
 
 Result<SurfacePrograms> buildSurfacePrograms(const gl::GlApi& gl, const gl::ShaderLibrary& library,

@@ -119,6 +119,7 @@ void IrradianceMap::begin(GLuint program, const IrradianceFrame& frame, const Ir
   g.Uniform4fv(at("u_clipPlanes"), 6, &planes[0].x);
   g.Uniform1i(at("u_clip"), settings.clip ? 1 : 0);
   g.Uniform1i(at("u_cull"), settings.cull ? 1 : 0);
+  g.Uniform1i(at("u_twoSided"), frame.twoSided ? 1 : 0);  // -1 (no such uniform) in irradiance.frag: a no-op
   g.Uniform1f(at("u_cullCosine"), kCullCosine);
   g.Uniform1f(at("u_mapSize"), float(m_size));
   g.UniformMatrix4fv(at("u_model"), 1, GL_FALSE, frame.model.data());

@@ -42,6 +42,10 @@ struct IrradianceFrame {
   Float3 lightPosition;  ///< mm
   Float3 lightRadiance;  ///< linear RGB
   Float3 ambient;        ///< linear RGB irradiance added everywhere
+  /// A double-sided object (SceneObject::doubleSided; pipeline lighting only): each texel is lit
+  /// on the side the camera sees, and no texel is culled (one of its two sides always faces
+  /// the camera within Jimenez §3's 105 degrees).
+  bool twoSided = false;
 };
 
 /// The pipeline's light for the irradiance pass: every light of the frame through

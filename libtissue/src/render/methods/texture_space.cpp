@@ -111,6 +111,7 @@ Result<void> TextureSpaceMethod::draw(const FrameContext& frame, std::span<const
     object.boundsLo = fromGlm(d.lo), object.boundsHi = fromGlm(d.hi);
     object.model = toArray(d.transform.model);
     object.normalMatrix = toArray(d.transform.normalMatrix);
+    object.twoSided = d.object->doubleSided;
     object.ambient = d.object->material.ambient;
     const IrradianceLighting lighting{&frame.lights,         frame.shadowMaps,   d.baseColor,
                                       d.normalMap,           s.albedoPreScatter, s.transmittance,
