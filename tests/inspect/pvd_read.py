@@ -3,7 +3,7 @@
 import sys
 
 from paraview import servermanager
-from paraview.simple import PVDReader
+from paraview.simple import GetParaViewVersion, PVDReader
 
 ARRAYS = ["velocity_mm_per_s", "stretch", "strain", "contact_force_N", "plane_normal",
           "plane_offset_mm", "plane_residual_mm", "tangent", "normal"]
@@ -25,4 +25,4 @@ for t in (times[0], times[-1]):
             sys.exit(f"FAIL: array {name} missing at t = {t}")
         if array.GetNumberOfTuples() != points:
             sys.exit(f"FAIL: array {name} has {array.GetNumberOfTuples()} tuples for {points} points")
-print(f"pvpython: 100 time steps {times[0]:.4f}..{times[-1]:.4f} s, {len(ARRAYS)} arrays on {points} points")
+print(f"ParaView {GetParaViewVersion()}: 100 time steps {times[0]:.4f}..{times[-1]:.4f} s, {len(ARRAYS)} arrays on {points} points")
