@@ -35,6 +35,7 @@ constexpr std::array<Rgb, 5> kViridis{{{0.267, 0.005, 0.329},
                                        {0.369, 0.789, 0.383},
                                        {0.993, 0.906, 0.144}}};
 constexpr std::array<Rgb, 3> kCoolWarm{{{0.230, 0.299, 0.754}, {0.865, 0.865, 0.865}, {0.706, 0.016, 0.150}}};
+constexpr std::array<Rgb, 2> kTwoTone{{{0.95, 0.70, 0.15}, {0.86, 0.86, 0.86}}};
 
 template <std::size_t N>
 vtkSmartPointer<vtkLookupTable> lookupTable(const std::array<Rgb, N>& points, std::array<double, 2> range) {
@@ -64,7 +65,9 @@ void buildScene(const ViewScene& scene, vtkRenderWindow* window, const ViewImage
   window->SetSize(size.widthPx, size.heightPx);
 
   // The coloured data (tubes for lines when asked).
-  auto table = scene.diverging ? lookupTable(kCoolWarm, scene.range) : lookupTable(kViridis, scene.range);
+  auto table = scene.palette == ViewScene::Palette::CoolWarm  ? lookupTable(kCoolWarm, scene.range)
+               : scene.palette == ViewScene::Palette::TwoTone ? lookupTable(kTwoTone, scene.range)
+                                                              : lookupTable(kViridis, scene.range);
   vtkNew<vtkPolyDataMapper> mapper;
   if (scene.tubes) {
     vtkNew<vtkTubeFilter> tubes;

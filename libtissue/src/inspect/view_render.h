@@ -36,11 +36,13 @@ struct ViewScene {
   std::string array;                      ///< point (or cell) array to colour by
   bool cellArray = false;                 ///< `array` is cell data
   std::array<double, 2> range{0.0, 1.0};  ///< colour range
-  bool diverging = false;                 ///< blue-white-red (symmetric data) instead of viridis
-  std::string barTitle;                   ///< the colour bar's title, with the unit
-  bool tubes = false;                     ///< draw `data`'s lines as tubes
-  double tubeRadius = 0.3;                ///< mm
-  vtkSmartPointer<vtkPolyData> context;   ///< drawn grey and translucent beneath (may be null)
+  /// The colour map: viridis (sequential), cool-warm (diverging, symmetric data) or two-tone
+  /// (gold at the low end, light grey at the high end: a sign such as handedness, under glyphs).
+  enum class Palette { Viridis, CoolWarm, TwoTone } palette = Palette::Viridis;
+  std::string barTitle;                  ///< the colour bar's title, with the unit
+  bool tubes = false;                    ///< draw `data`'s lines as tubes
+  double tubeRadius = 0.3;               ///< mm
+  vtkSmartPointer<vtkPolyData> context;  ///< drawn grey and translucent beneath (may be null)
   std::vector<ViewOverlay> overlays;
 };
 

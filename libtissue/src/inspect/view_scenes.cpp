@@ -168,7 +168,7 @@ ViewScene springStrain(const OrganSnapshot& f, const ViewSettings& settings) {
   s.array = "strain";
   s.cellArray = true;
   s.range = symmetricRange(f.nodes.strain, 0.0);
-  s.diverging = true;
+  s.palette = ViewScene::Palette::CoolWarm;
   s.tubes = f.nodes.springs.size() <= settings.maxTubes;
   s.tubeRadius = 0.15 * double(glyphLength(f.nodes.positions));
   s.barTitle = "spring strain\nL/L0 - 1 (unitless)";
@@ -184,7 +184,7 @@ ViewScene vertexStretch(const OrganSnapshot& f) {
   addArray(s.data->GetPointData(), "velocity_mm_per_s", f.surface.velocities);
   s.array = "stretch";
   s.range = symmetricRange(f.surface.stretch, 1.0);
-  s.diverging = true;
+  s.palette = ViewScene::Palette::CoolWarm;
   s.barTitle = "stretch per vertex\nmean L/L0 (unitless)";
   s.title = "Stretch per vertex" + timeOf(f);
   return s;
@@ -267,7 +267,7 @@ ViewScene tangentFrames(const OrganSnapshot& f, const ViewSettings& settings) {
   addArray(s.data->GetPointData(), "seam_flip", r.handednessFlip);
   s.array = "handedness";
   s.range = {-1.0, 1.0};
-  s.diverging = true;
+  s.palette = ViewScene::Palette::TwoTone;
   s.barTitle = "handedness w\n(-1 mirrored, +1)";
   s.title = "Tangent frames" + timeOf(f);
   const float len = glyphLength(r.positions);
@@ -297,7 +297,7 @@ ViewScene textureStretch(const OrganSnapshot& f) {
   s.array = "texture_stretch";
   s.cellArray = true;
   s.range = rangeOf(f.render.textureStretch);
-  s.barTitle = "texture-space stretch\nsqrt(|dP/du||dP/dv|) x density\n(unitless, 1 = mean)";
+  s.barTitle = "texture stretch\n(unitless, 1 = mean)";
   s.title = "Texture-space stretch per triangle" + timeOf(f);
   return s;
 }
