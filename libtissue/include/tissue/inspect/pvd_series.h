@@ -18,6 +18,7 @@
 ///   series->addFrame(inspect::snapshotOf(loop.run(), loop.surface())); // every frame
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,32 @@ class PvdSeries {
   std::string m_name;
   std::filesystem::path m_pvd;
   std::vector<Entry> m_entries;
+};
+
+/// A series of a bare scenario run (what `tissue-sim simulate` has: a ScenarioRun without the
+/// scene's loop). It keeps the run's surface in step itself (a mesh::DeformableSurface of
+/// run.mesh().surface, updated with run.positions() each frame), so that every frame carries the
+/// planes and tangents too. A surface without UVs (a tet mesh's boundary) gets the planar
+/// projection (x, y) over its bounding box as UVs, so its tangents are that projection's frame.
+class RunSeries {
+ public:
+  /// Starts `<dir>/<name>.pvd` for `run`. Fails on a bad folder or name, or when the surface
+  /// cannot be built (an invalid mesh).
+  static Result<RunSeries> create(const scenario::ScenarioRun& run, const std::filesystem::path& dir,
+                                  const std::string& name = "organ");
+  ~RunSeries();
+  RunSeries(RunSeries&&) noexcept;
+  RunSeries& operator=(RunSeries&&) noexcept;
+
+  /// The frame `run` has just simulated: the surface updated, the snapshot taken, the file and
+  /// the .pvd written (PvdSeries::addFrame).
+  Result<PvdFrameCost> addFrame(const scenario::ScenarioRun& run);
+  const PvdSeries& series() const { return m_series; }
+
+ private:
+  RunSeries(PvdSeries series, std::unique_ptr<mesh::DeformableSurface> surface);
+  PvdSeries m_series;
+  std::unique_ptr<mesh::DeformableSurface> m_surface;
 };
 
 /// Writes one frame on its own (.vtp or .vtu as the organ's kind; see the file comment).
