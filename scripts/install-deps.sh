@@ -26,6 +26,16 @@ packages=(
   ccache                   # compiler cache: the second and third test trees reuse the first's objects
 )
 
+# --paraview: ParaView too, for the pvpython test of the .pvd series (tests/inspect/pvd_pvpython_test.sh,
+# configure with -DTISSUE_TEST_PARAVIEW=ON). Not by default: about 1 GB with its dependencies. Debian 12's
+# python3-paraview conflicts with libvtk9-dev and python3-vtk9 (installing it removes this build's VTK), so
+# its files are unpacked into /opt/tissue-paraview instead, where the test points pvbatch's PYTHONPATH.
+paraview_python() {
+  [ "${1:-}" = "--paraview" ] && [ ! -d /opt/tissue-paraview/usr/lib/python3/dist-packages/paraview ] || return 0
+  (cd /tmp && apt-get download python3-paraview && dpkg -x python3-paraview_*.deb /opt/tissue-paraview && rm -f python3-paraview_*.deb)
+}
+if [ "${1:-}" = "--paraview" ]; then packages+=(paraview); fi
+
 missing=()
 for p in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
@@ -35,6 +45,7 @@ done
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages present"
+  paraview_python "${1:-}"
   exit 0
 fi
 
@@ -47,3 +58,4 @@ echo "install-deps: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 apt-get update -qq
 apt-get install -y -qq --no-install-recommends "${missing[@]}"
+paraview_python "${1:-}"

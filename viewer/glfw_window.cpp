@@ -65,6 +65,10 @@ void Window::present() {
   m_context->present();
 }
 
+void Window::makeCurrent() {
+  (void)m_context->makeCurrent();
+}
+
 void Window::setTitle(const std::string& title) {
   glfwSetWindowTitle(m_window, title.c_str());
 }
@@ -135,6 +139,7 @@ void Window::onKey(GLFWwindow* window, int key, int /*scancode*/, int action, in
   if (key == GLFW_KEY_R) pending.toggleRecord = true;
   if (key == GLFW_KEY_G) pending.toggleGrasp = true;
   if (key == GLFW_KEY_N) pending.toggleNormalMap = true;
+  if (key == GLFW_KEY_I) pending.inspect = true;
   if (key == GLFW_KEY_M) pending.cycleMethod = true;
 }
 

@@ -32,6 +32,7 @@ struct InputFrame {
   bool toggleGrasp = false;      ///< G: grasp or release
   bool toggleNormalMap = false;  ///< N
   bool cycleMethod = false;      ///< M: the next shading method
+  bool inspect = false;          ///< I: the VTK inspection of the current frame
 };
 
 /// A window with a current GL 3.3 core context. Not copyable or movable (GLFW keeps a pointer).
@@ -48,6 +49,8 @@ class Window {
   InputFrame poll();
   /// Shows the frame drawn into the default framebuffer.
   void present();
+  /// Makes the window's context current again (after another window, e.g. VTK's, took it).
+  void makeCurrent();
   void setTitle(const std::string& title);
 
   /// Size of the default framebuffer, pixels (differs from the window size on HiDPI screens).

@@ -2,7 +2,8 @@
 // mass-spring model through scene::OrganLoop); orbit (left drag), zoom (scroll), poke with the
 // instrument (right button; scroll with it held, Shift+scroll, W/S or PageUp/PageDown move it in
 // depth), G grasps and releases; Esc quits, C resets the view, R records, N toggles normal
-// mapping, M switches the shading method; the panel shows the figures and switches the rest.
+// mapping, M switches the shading method, I opens a VTK inspection window of the frame (or writes
+// the views without a display); the panel shows the figures and switches the rest.
 #include <CLI/CLI.hpp>
 #include <cstdlib>
 #include <exception>
@@ -32,8 +33,8 @@ int main(int argc, char** argv) {
   CLI::App app{
       "tissue-viewer: the simulated organ, poked and grasped with the scenario's instrument. Mouse: orbit "
       "(left drag), zoom (scroll), poke (right button; with it held, scroll moves the tool in depth). Keys: "
-      "W/S or PageDown/PageUp depth, G grasp/release, M method, N normal map, C home view, R record, Esc "
-      "quit."};
+      "W/S or PageDown/PageUp depth, G grasp/release, M method, N normal map, C home view, R record, I "
+      "inspection views, Esc quit."};
   app.add_option("--scenario", options.scenario,
                  "scenario file (default data/scenarios/liver_poke_grasp.json)");
   app.add_option("--width", options.width, "window width, pixels")->check(CLI::Range(16, 8192));

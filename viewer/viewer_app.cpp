@@ -16,6 +16,7 @@
 #include "orbit_camera.h"
 #include "panel.h"
 #include "ray_pick.h"
+#include "tissue/inspect/inspection_views.h"
 #include "tissue/render/renderer.h"
 #include "tissue/scene/organ_loop.h"
 #include "tissue/scene/session.h"
@@ -141,6 +142,29 @@ Result<void> applyPanel(Viewer& v, const PanelActions& a, scene::InstrumentInput
   return {};
 }
 
+/// I: the VTK inspection of the current frame. With a display, a window of the next view
+/// (kInspectionViews in turn; the viewer waits until it is closed); without one, every view
+/// written to tissue-inspect/frame_N. A failure is reported and the viewer goes on.
+void inspectFrame(Viewer& v) {
+  const auto snapshot = inspect::snapshotOf(v.loop->run(), v.loop->surface());
+  if (inspect::hasDisplay()) {
+    const auto view = inspect::kInspectionViews[v.inspectView++ % std::size(inspect::kInspectionViews)];
+    std::printf("tissue-viewer: inspection window '%s' (close it to go on; I again: the next view)\n",
+                inspect::viewName(view).c_str());
+    auto shown = inspect::showInspectionWindow(snapshot, view);
+    v.window->makeCurrent();  // VTK's window took the context
+    if (!shown) std::fprintf(stderr, "tissue-viewer: %s\n", shown.error().message.c_str());
+    return;
+  }
+  const std::filesystem::path dir = "tissue-inspect/frame_" + std::to_string(snapshot.frame);
+  auto written = inspect::writeInspectionViews(snapshot, dir);
+  if (!written) {
+    std::fprintf(stderr, "tissue-viewer: %s\n", written.error().message.c_str());
+    return;
+  }
+  std::printf("tissue-viewer: wrote %zu inspection views to %s\n", written->size(), dir.string().c_str());
+}
+
 /// The frame loop, top to bottom: input (and the panel's layout), the library's loop (simulate,
 /// mesh, upload, render into the window), the panel, the screenshot, present, record, log.
 Result<void> runFrames(Viewer& v, const ViewerOptions& options, FrameTimer& timer) {
@@ -158,6 +182,7 @@ Result<void> runFrames(Viewer& v, const ViewerOptions& options, FrameTimer& time
       const bool keys = !v.panel || !v.panel->wantsKeyboard();
       if (keys && in.toggleNormalMap) v.normalMapping = !v.normalMapping;
       if (keys && in.cycleMethod) v.method = (v.method + 1) % v.methods.size();
+      if (keys && in.inspect) inspectFrame(v);
       if (keys && in.toggleRecord)
         if (auto ok = toggleRecording(v); !ok) return ok;
       if (v.replay) {

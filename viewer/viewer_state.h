@@ -39,6 +39,7 @@ struct Viewer {
   std::optional<render::Renderer> renderer;
   std::unique_ptr<Panel> panel;
   std::optional<scene::OrganLoop> loop;
+  std::size_t inspectView = 0;  ///< the view key I shows next (tissue::inspect::kInspectionViews)
   std::optional<OrbitCamera> orbit;
   std::optional<InstrumentControl> tool;        ///< the interactive instrument
   Bounds3 box;                                  ///< mm, the rest shape's bounding box (the home view)

@@ -11,7 +11,6 @@
 #include <vtkContextView.h>
 #include <vtkDoubleArray.h>
 #include <vtkNew.h>
-#include <vtkPNGWriter.h>
 #include <vtkPlot.h>
 #include <vtkPlotLine.h>
 #include <vtkRenderWindow.h>
@@ -19,8 +18,6 @@
 #include <vtkSmartPointer.h>
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
-#include <vtkUnsignedCharArray.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <array>
 #include <cmath>
@@ -28,6 +25,7 @@
 #include <vector>
 
 #include "tissue/core/atomic_file.h"
+#include "vtk_io.h"
 #include "x_display.h"
 
 namespace tissue::inspect {
@@ -141,22 +139,11 @@ Result<void> writeLineChart(const std::filesystem::path& png, const ChartSetting
   }
 
   // Render, grab the back buffer, encode PNG in memory, write atomically.
-  window->Render();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkNew<vtkPNGWriter> writer;
-  writer->WriteToMemoryOn();
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->Write();
-  vtkUnsignedCharArray* bytes = writer->GetResult();
-  if (!bytes || bytes->GetNumberOfValues() == 0)
-    return Error{"chart " + png.string() + ": VTK produced no image; check the X display (Xvfb) works"};
+  const auto bytes = renderToPng(window);
   window->Finalize();
-  return writeFileAtomic(png,
-                         std::span<const std::uint8_t>(bytes->GetPointer(0),
-                                                       static_cast<std::size_t>(bytes->GetNumberOfValues())));
+  if (bytes.empty())
+    return Error{"chart " + png.string() + ": VTK produced no image; check the X display (Xvfb) works"};
+  return writeFileAtomic(png, bytes);
 }
 
 }  // namespace tissue::inspect

@@ -7,9 +7,8 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkXMLPolyDataWriter.h>
 
-#include <random>
+#include "vtk_io.h"
 
 namespace tissue::inspect {
 
@@ -47,23 +46,7 @@ Result<void> writeVtp(const std::filesystem::path& path, std::span<const Float3>
     std::copy(f.values.begin(), f.values.end(), array->GetPointer(0));
     poly->GetPointData()->AddArray(array);
   }
-  // Write beside the target, then rename: an interrupted export never replaces a good file.
-  std::error_code ec;
-  std::filesystem::create_directories(path.has_parent_path() ? path.parent_path() : ".", ec);
-  std::string tmpName(".");  // appended, not "." + string: g++ 12 reports a false -Wrestrict
-  tmpName.append(path.filename().string()).append(".tmp").append(std::to_string(std::random_device{}()));
-  const auto tmp = path.parent_path() / tmpName;
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetFileName(tmp.c_str());
-  writer->SetInputData(poly);
-  writer->SetDataModeToBinary();
-  if (writer->Write() != 1) {
-    std::filesystem::remove(tmp, ec);
-    return Error{where + "VTK's writer failed; check the folder is writable and the disk not full"};
-  }
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) return Error{where + ec.message()};
-  return {};
+  return writeXmlAtomic(poly, path);
 }
 
 }  // namespace tissue::inspect

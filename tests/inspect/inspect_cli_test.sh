@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# tissue-sim inspect end to end: the default scenario and the shipped session each write every
+# view (PNG and .vtp) of a frame; bad input (a frame past the end, a session of another mesh, a
+# missing file) is one line on stderr with the fix, and a non-zero exit.
+#   inspect_cli_test.sh TISSUE_SIM DATA_DIR OUT_DIR
+set -u
+sim="$1"; data="$2"; dir="$3"; rm -rf "$dir"; mkdir -p "$dir"
+status=0
+fail() { echo "FAIL $*"; status=1; }
+views="spring_strain vertex_stretch contact_force plane_fit tangent_frames texture_stretch"
+
+"$sim" --json inspect "$data/scenarios/liver_poke_grasp.json" --frame 190 --out "$dir/scenario" --width 480 --height 360 \
+  >"$dir/scenario.json" || fail "inspect SCENARIO exit $?"
+"$sim" inspect "$data/sessions/liver_poke_grasp.json" --frame 30 --out "$dir/session" --width 480 --height 360 \
+  >/dev/null || fail "inspect SESSION exit $?"
+for run in scenario session; do
+  for v in $views; do
+    [ -s "$dir/$run/$v.png" ] || fail "$run: no $v.png"
+    [ -s "$dir/$run/$v.vtp" ] || fail "$run: no $v.vtp"
+  done
+done
+grep -q '"frame": 190' "$dir/scenario.json" || fail "inspect --json lacks the frame"
+
+# Bad input. The session of another mesh keeps its scenario reachable (an absolute path).
+sed -e 's/"mesh_vertices": [0-9]*/"mesh_vertices": 12/' \
+    -e "s|\"scenario\": \"[^\"]*\"|\"scenario\": \"$data/scenarios/liver_poke_grasp.json\"|" \
+    "$data/sessions/liver_poke_grasp.json" >"$dir/other.json"
+check() {  # check EXPECTED_TEXT ARGS...: one line on stderr containing the text, non-zero exit
+  local want="$1"; shift
+  "$sim" "$@" >"$dir/out.txt" 2>"$dir/err.txt"; local rc=$?
+  if [ "$rc" -eq 0 ] || [ "$(wc -l <"$dir/err.txt")" -ne 1 ] || ! grep -q -- "$want" "$dir/err.txt"; then
+    fail "$*: exit $rc"; cat "$dir/err.txt"
+  fi
+}
+check "pass --frame 0..1000" inspect "$data/scenarios/liver_poke_grasp.json" --frame 1001 --out "$dir/x"
+check "replay it with the scenario it was recorded with" inspect "$dir/other.json" --frame 1 --out "$dir/x"
+check "missing.json" inspect "$dir/missing.json" --out "$dir/x"
+[ "$status" -eq 0 ] && echo "ok"
+exit "$status"
