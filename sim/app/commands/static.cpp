@@ -4,9 +4,9 @@
 // (mm) per vertex in the mesh file's vertex order, atomically.
 #include <algorithm>
 #include <cstdio>
-#include <iostream>
 #include <numeric>
 
+#include "cli_options.h"
 #include "command.h"
 #include "output.h"
 #include "tissue/core/atomic_file.h"
@@ -43,10 +43,8 @@ std::string positionLines(const std::vector<sim::Vec3d>& x, const std::vector<st
 int runStatic(const StaticOptions& o, const GlobalOptions& global) {
   if (!(o.toleranceN > 0.0)) return fail("static", "--tolerance: expected a positive force in N");
   if (o.maxIterations < 1) return fail("static", "--max-iterations: expected a positive integer");
-  auto parsed = scenario::loadScenario(o.scenario, {.sharedMeshesDir = sharedDir() / "meshes"});
+  auto parsed = loadScenarioFile("static", o.scenario);
   if (!parsed) return fail("static", parsed.error().message);
-  for (const std::string& warning : parsed->warnings)  // e.g. a Poisson ratio springs cannot realise
-    std::cerr << "tissue-sim static: warning: " << warning << "\n";
   auto mesh = scenario::loadScenarioMesh(*parsed);
   if (!mesh) return fail("static", mesh.error().message);
   auto system = scenario::buildSystem(*parsed, *mesh);
