@@ -17,18 +17,18 @@ namespace tissue::studies {
 
 /// Settings of the main job (plain struct with defaults).
 struct DemoConfig {
-  std::filesystem::path outDir;         ///< images, frames/, frames.csv, report.json, report.md (created)
-  std::filesystem::path dataDir;        ///< the project's data/: scenarios/, materials/, meshes/
-  std::filesystem::path scenarioFile;   ///< empty: dataDir/scenarios/liver_poke_grasp.json
-  std::filesystem::path meshFile;       ///< empty: the scenario's mesh; must have UVs and a material file
-  int frames = 0;                       ///< 0: the scenario's
-  int imageEvery = 100;                 ///< the loop's rendered frame is written every this many frames
-  std::filesystem::path recordSession;  ///< non-empty: write the run as a session (scene::SessionRecorder)
-  int loopWidth = 480;                  ///< pixels of the frame the loop renders every frame
-  int loopHeight = 360;                 ///< pixels
-  int width = 960;                      ///< pixels of the snapshots and method renders
-  int height = 720;                     ///< pixels
-  bool logContext = true;               ///< one stderr line naming the demo's headless context
+  std::filesystem::path outDir{};         ///< images, frames/, frames.csv, report.json, report.md (created)
+  std::filesystem::path dataDir{};        ///< the project's data/: scenarios/, materials/, meshes/
+  std::filesystem::path scenarioFile{};   ///< empty: dataDir/scenarios/liver_poke_grasp.json
+  std::filesystem::path meshFile{};       ///< empty: the scenario's mesh; must have UVs and a material file
+  int frames = 0;                         ///< 0: the scenario's
+  int imageEvery = 100;                   ///< the loop's rendered frame is written every this many frames
+  std::filesystem::path recordSession{};  ///< non-empty: write the run as a session (scene::SessionRecorder)
+  int loopWidth = 480;                    ///< pixels of the frame the loop renders every frame
+  int loopHeight = 360;                   ///< pixels
+  int width = 960;                        ///< pixels of the snapshots and method renders
+  int height = 720;                       ///< pixels
+  bool logContext = true;                 ///< one stderr line naming the demo's headless context
 };
 
 /// What the main job hands back besides its images: the report it wrote (report.json and

@@ -15,13 +15,13 @@ namespace tissue::studies {
 
 /// What to replay and what to write (plain struct with defaults).
 struct ReplayConfig {
-  std::filesystem::path session;  ///< the session file (data/sessions/*.json, docs/SESSIONS.md)
-  bool render = false;            ///< also upload and render every frame (lit, offscreen)
-  std::filesystem::path outDir;   ///< non-empty: report.json, frames.csv and (render) frame images
-  int width = 480;                ///< pixels of the rendered frames
-  int height = 360;               ///< pixels
-  int imageEvery = 100;           ///< with render and outDir: every this many frames an image
-  bool logContext = true;         ///< one stderr line naming the headless context (render)
+  std::filesystem::path session{};  ///< the session file (data/sessions/*.json, docs/SESSIONS.md)
+  bool render = false;              ///< also upload and render every frame (lit, offscreen)
+  std::filesystem::path outDir{};   ///< non-empty: report.json, frames.csv and (render) frame images
+  int width = 480;                  ///< pixels of the rendered frames
+  int height = 360;                 ///< pixels
+  int imageEvery = 100;             ///< with render and outDir: every this many frames an image
+  bool logContext = true;           ///< one stderr line naming the headless context (render)
 };
 
 /// Replays `config.session` with the scenario it was recorded with in a scene of `scene`'s
