@@ -18,6 +18,12 @@ Result<std::unique_ptr<context::GlContext>> createAppContext(context::ContextReq
   return context::createHeadlessContext(request, {.backend = glContextFromEnvironment(), .log = log});
 }
 
+Result<render::Renderer> createAppRenderer(const context::GlContext& context, int samples, bool gpuTimers) {
+  return render::Renderer::create(
+      context.procAddressFunction(),
+      {.shaders = shaderSettingsFromEnvironment(), .samples = samples, .gpuTimers = gpuTimers});
+}
+
 std::string glContextFromEnvironment() {
   return environment("TISSUE_GL_CONTEXT");
 }

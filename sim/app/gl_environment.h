@@ -13,6 +13,7 @@
 #include "tissue/context/headless_context.h"
 #include "tissue/core/result.h"
 #include "tissue/gl/shader_library.h"
+#include "tissue/render/renderer.h"
 
 namespace tissue::sim_app {
 
@@ -20,6 +21,10 @@ namespace tissue::sim_app {
 /// naming the context (and one per fallback).
 Result<std::unique_ptr<context::GlContext>> createAppContext(context::ContextRequest request = {},
                                                              bool log = true);
+
+/// A renderer on `context` (current) with the environment's shaders, `samples` MSAA (0: off) and
+/// GPU timer queries when `gpuTimers`.
+Result<render::Renderer> createAppRenderer(const context::GlContext& context, int samples, bool gpuTimers);
 
 /// The shader sources' override folder from TISSUE_SHADER_DIR (empty: embedded only).
 gl::ShaderLibrarySettings shaderSettingsFromEnvironment();

@@ -27,6 +27,10 @@ scene::OrganSource organSourceFor(const std::filesystem::path& meshFile, float s
           .materialOptions = dataMaterialOptions()};
 }
 
+scene::OrganSource dataOrganNamed(const std::string& name) {
+  return organSourceFor(dataDir() / "meshes" / (name + ".obj"));
+}
+
 scene::SceneSettings dataSceneSettings() {
   scene::SceneSettings settings;
   settings.materials = dataMaterialOptions();

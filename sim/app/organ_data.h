@@ -6,6 +6,7 @@
 /// the scene module's, the one reader of data/materials/*.json.
 
 #include <filesystem>
+#include <string>
 
 #include "tissue/core/result.h"
 #include "tissue/materials/method_materials.h"  // for the files that include this one
@@ -28,6 +29,9 @@ Result<scene::MaterialFile> readDataMaterial(const std::filesystem::path& file);
 /// An organ from `meshFile` (mm per unit `scaleToMm`) and its data/materials/<stem>.json, with
 /// the scene module's UV-atlas fallback.
 scene::OrganSource organSourceFor(const std::filesystem::path& meshFile, float scaleToMm = 1.0f);
+
+/// The data organ `name`: data/meshes/<name>.obj with its material file (organSourceFor).
+scene::OrganSource dataOrganNamed(const std::string& name);
 
 /// A scene's settings for the project's data: data/materials/ (an organ's material by its mesh's
 /// name), the shared meshes, and the environment's shaders and headless context.

@@ -4,10 +4,12 @@
 /// one line on stderr ("tissue-sim <command>: <what>, <where>; <how to fix>") and exit code 1.
 
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "command.h"
+#include "tissue/core/result.h"
 #include "tissue/studies/report.h"
 
 namespace tissue::sim_app {
@@ -25,6 +27,15 @@ int writeReportTo(const std::string& command, const std::filesystem::path& dir,
 
 /// Prints one error line on stderr and returns the exit code to use (1).
 int fail(const std::string& command, const std::string& message);
+
+/// Prints what a library run returns, its JSON text (`json` of it: the text itself, or a member
+/// holding it) as printJsonText does, or its error as fail does; returns the exit code.
+template <class T, class Json = std::identity>
+int printRun(const std::string& command, const GlobalOptions& global, const Result<T>& run, Json json = {}) {
+  if (!run) return fail(command, run.error().message);
+  printJsonText(global, std::invoke(json, *run));
+  return 0;
+}
 
 /// The project's data folder: $TISSUE_DATA_DIR, else the source tree's data/.
 std::filesystem::path dataDir();

@@ -4,17 +4,16 @@
 // subsurface texture mapping in step, renders the organ before and after (when a GL context
 // can be created) every frame through the library's loop (tissue::scene::OrganLoop: simulate, mesh,
 // upload, render), writes every 100th frame and a report with the median and p99 of each phase.
-#include <cmath>
-#include <iostream>
-
+// The run and its report are tissue::studies' (studies/demo_run.h); this command parses and prints.
 #include "command.h"
-#include "demo_scenario.h"
+#include "organ_data.h"
 #include "output.h"
+#include "tissue/studies/demo_run.h"
 
 namespace tissue::sim_app {
 
 void registerDemoCommand(CLI::App& app, const GlobalOptions& global, int& exitCode) {
-  auto o = std::make_shared<DemoOptions>();
+  auto o = std::make_shared<studies::DemoConfig>();
   auto* cmd = app.add_subcommand(
       "demo", "the default headless scenario: poke and grasp the liver, update shading data, render, report");
   cmd->add_option("--out", o->outDir, "output folder for images and the report")->required();
@@ -33,12 +32,10 @@ void registerDemoCommand(CLI::App& app, const GlobalOptions& global, int& exitCo
       ->check(CLI::Range(16, 8192));
   cmd->add_option("--loop-height", o->loopHeight, "pixels (default 360)")->check(CLI::Range(16, 8192));
   cmd->callback([o, &global, &exitCode] {
-    auto report = runDemo(*o);
-    if (!report) {
-      exitCode = fail("demo", report.error().message);
-      return;
-    }
-    printResult(global, *report);
+    o->dataDir = dataDir();
+    if (o->frames < 0)
+      return void(exitCode = fail("demo", "--frames must be at least 1 (0: the scenario's)"));
+    exitCode = printRun("demo", global, studies::runDemo(*o, dataSceneSettings()), &studies::DemoRun::json);
   });
 }
 

@@ -2,6 +2,7 @@
 // integrator and Young's modulus, the largest frame step at which the default scenario (the
 // volumetric liver under its scripted poke) runs without divergence, the degrade off; and what
 // each integrator costs per 60 Hz frame to stay stable (tissue/studies/organ_stability_report.h).
+#include "cli_options.h"
 #include "command.h"
 #include "output.h"
 #include "tissue/studies/organ_stability_report.h"
@@ -25,9 +26,8 @@ void registerOrganStabilityCommand(CLI::App& app, const GlobalOptions& global, i
       ->check(CLI::Range(0.05, 60.0));
   cmd->add_option("--out", o->out, "folder for organ_stability.md, .json and the charts");
   cmd->callback([o, &global, &exitCode] {
-    const auto file = o->scenario.empty() ? dataDir() / "scenarios" / "liver_poke_grasp.json"
-                                          : std::filesystem::path(o->scenario);
-    auto r = studies::runOrganStabilityReport(file, {.sharedMeshesDir = sharedDir() / "meshes"}, o->config);
+    auto r = studies::runOrganStabilityReport(scenarioOrDefault(o->scenario),
+                                              {.sharedMeshesDir = sharedDir() / "meshes"}, o->config);
     if (!r) {
       exitCode = fail("organ-stability", r.error().message);
       return;

@@ -23,14 +23,10 @@ int run(StudyOptions o, const GlobalOptions& global) {
   const char* cmd = "parallax-study";
   auto context = createAppContext({}, false);
   if (!context) return fail(cmd, context.error().message);
-  auto renderer =
-      render::Renderer::create((*context)->procAddressFunction(),
-                               {.shaders = shaderSettingsFromEnvironment(), .samples = 4, .gpuTimers = true});
+  auto renderer = createAppRenderer(**context, 4, true);
   if (!renderer) return fail(cmd, renderer.error().message);
   o.run.imageFolder = o.places.out;
-  auto study = studies::runParallaxStudy(
-      *renderer,
-      [](const std::string& mesh) { return organSourceFor(dataDir() / "meshes" / (mesh + ".obj")); }, o.run);
+  auto study = studies::runParallaxStudy(*renderer, dataOrganNamed, o.run);
   if (!study) return fail(cmd, study.error().message);
   return finishStudy(cmd, std::move(study->output), o.places, global);
 }

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "../organ_data.h"
+#include "cli_options.h"
 #include "command.h"
 #include "gl_environment.h"
 #include "output.h"
@@ -23,7 +24,6 @@ struct BenchOptions {
 
 int run(BenchOptions o, const GlobalOptions& global) {
   const char* cmd = "raymarch-bench";
-  if (o.mesh.empty()) o.mesh = (dataDir() / "meshes" / "liver.obj").string();
   o.config.images = !o.places.out.empty() || !o.places.images.empty();
   o.config.chart = !o.places.chart.empty();
   std::optional<studies::RayMarchBenchResult> bench;
@@ -33,8 +33,8 @@ int run(BenchOptions o, const GlobalOptions& global) {
     if (!context) return fail(cmd, context.error().message);
     o.config.glRenderer = (*context)->info().renderer;
     auto r = studies::runRayMarchBench((*context)->procAddressFunction(),
-                                       {.shaders = shaderSettingsFromEnvironment()}, organSourceFor(o.mesh),
-                                       o.config);
+                                       {.shaders = shaderSettingsFromEnvironment()},
+                                       organSourceFor(meshOrDefault(o.mesh)), o.config);
     if (!r) return fail(cmd, r.error().message);
     bench = std::move(*r);
   }
@@ -50,8 +50,7 @@ void registerRayMarchBenchCommand(CLI::App& app, const GlobalOptions& global, in
                                  "time ray-marched subsurface scattering per sample count and adaptive, "
                                  "with the error against the CPU reference");
   cmd->add_option("--mesh", o->mesh, "a data/ mesh with a material file (default data/meshes/liver.obj)");
-  cmd->add_option("--width", c.width, "image width, pixels (default 240)");
-  cmd->add_option("--height", c.height, "image height, pixels (default 180)");
+  addImageSizeOptions(cmd, c.width, c.height);
   cmd->add_option("--reference-samples", c.referenceSamples, "CPU reference samples (default 200)");
   cmd->add_option("--repeats", c.repeats, "timed frames per setting, median (default 7)");
   cmd->add_option("--poke-depth", c.pokeDepthMm, "poke depth, mm (default 8; 0 = rest shape)");

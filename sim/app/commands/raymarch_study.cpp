@@ -5,6 +5,7 @@
 
 #include "tissue/studies/raymarch_study.h"
 #include "../organ_data.h"
+#include "cli_options.h"
 #include "command.h"
 #include "output.h"
 #include "report_output.h"
@@ -19,9 +20,8 @@ struct StudyOptions {
 
 int run(const StudyOptions& o, const GlobalOptions& global) {
   const char* cmd = "raymarch-study";
-  auto study = studies::runRayMarchStudy(
-      [](const std::string& mesh) { return organSourceFor(dataDir() / "meshes" / (mesh + ".obj")); },
-      o.config, !o.places.out.empty() || !o.places.images.empty());
+  auto study =
+      studies::runRayMarchStudy(dataOrganNamed, o.config, !o.places.out.empty() || !o.places.images.empty());
   if (!study) return fail(cmd, study.error().message);
   return finishStudy(cmd, std::move(study->output), o.places, global);
 }
@@ -33,8 +33,7 @@ void registerRayMarchStudyCommand(CLI::App& app, const GlobalOptions& global, in
   auto* cmd = app.add_subcommand("raymarch-study",
                                  "where ray-marched subsurface scattering fails: grazing views, curvature, "
                                  "deformation, few samples (RMS against the mesh-entry reference)");
-  cmd->add_option("--width", o->config.width, "image width, pixels (default 120)");
-  cmd->add_option("--height", o->config.height, "image height, pixels (default 90)");
+  addImageSizeOptions(cmd, o->config.width, o->config.height);
   cmd->add_option("--reference-samples", o->config.referenceSamples,
                   "samples of the reference (default 100)");
   cmd->add_option("--images", o->places.images, "folder for reference, 10-sample and error images (created)");

@@ -5,19 +5,20 @@
 #include <filesystem>
 #include <optional>
 
-#include "../demo_render.h"
 #include "../organ_data.h"
-#include "../pass_timings_json.h"
+#include "cli_options.h"
 #include "command.h"
 #include "gl_environment.h"
 #include "output.h"
 #include "tissue/scene/scene.h"
+#include "tissue/studies/demo_run.h"
+#include "tissue/studies/render_summary.h"
 
 namespace tissue::sim_app {
 namespace {
 
 struct RenderOptions {
-  std::string mesh = (dataDir() / "meshes" / "liver.obj").string();
+  std::string mesh;  // empty: data/meshes/liver.obj
   std::string method = "lit";
   std::string material;  // data/materials/<name>.json; default: the mesh's stem, when there is one
   std::string out;
@@ -57,7 +58,7 @@ int run(const RenderOptions& o, const GlobalOptions& global) {
   auto made = scene::Scene::create((*context)->procAddressFunction(), settings);
   if (!made) return fail(cmd, made.error().message);
   scene::Scene& s = *made;
-  scene::OrganDesc desc{.mesh = o.mesh, .method = *method, .meshScaleToMm = o.scale};
+  scene::OrganDesc desc{.mesh = meshOrDefault(o.mesh), .method = *method, .meshScaleToMm = o.scale};
   if (!o.material.empty()) desc.material = dataDir() / "materials" / (o.material + ".json");
   auto organ = s.addOrgan(desc);
   if (!organ)
@@ -68,7 +69,8 @@ int run(const RenderOptions& o, const GlobalOptions& global) {
     auto rest = mesh::DeformableSurface::create(s.assets(*organ).mesh, s.assets(*organ).planes);
     if (!rest) return fail(cmd, rest.error().message);
     surface.emplace(std::move(*rest));
-    if (auto framed = frameForRayMarch(s, *surface, float(o.width) / float(o.height), false); !framed)
+    if (auto framed = studies::frameForRayMarch(s, *surface, float(o.width) / float(o.height), false);
+        !framed)
       return fail(cmd, framed.error().message);
   }
   // A first frame allocates the targets and compiles the shaders; the second is timed.
@@ -79,57 +81,15 @@ int run(const RenderOptions& o, const GlobalOptions& global) {
   if (!image) return fail(cmd, image.error().message);
   if (auto w = writePng(o.out, *image); !w) return fail(cmd, w.error().message);
 
-  const render::RenderTimings& t = s.renderer().lastTimings();
-  const scene::OrganAssets& a = s.assets(*organ);
-  const scene::MethodChoices& c = o.choices;
-  nlohmann::json out{
-      {"out", o.out},
-      {"method", render::shadingMethodName(*method)},
-      {"width", o.width},
-      {"height", o.height},
-      {"gl_context", (*context)->info().backend},
-      {"gl_renderer", (*context)->info().renderer},
-      {"render_ms", t.totalCpuMs},
-      {"first_frame_ms", firstMs},
-      {"passes", passTimingsJson(t)},
-      {"upload_ms", t.uploadCpuMs},
-      {"samples", o.samples},
-      {"material", a.material.file.empty() ? "default" : a.material.file.string()},
-      {"triangles", a.mesh.triangles.size()},
-      {"uvs", a.atlas ? "automatic atlas (" + std::to_string(a.atlasCharts) + " charts)" : "the mesh's own"},
-      {"base_color", a.baseColor ? a.material.textures.baseColor.string() : ""},
-      {"normal_map", a.normalMap ? a.material.textures.normalMap.string() : ""}};
-  switch (*method) {
-    case render::ShadingMethod::Lit:
-      break;
-    case render::ShadingMethod::Separable:
-      out.update({{"kernel", c.kernel}, {"taps", c.taps}, {"rank", c.rank}});
-      break;
-    case render::ShadingMethod::TextureSpace:
-      out.update({{"gaussians", c.gaussians},
-                  {"map_size", c.mapSize},
-                  {"cull", c.cull},
-                  {"clip", c.clip},
-                  {"depth_size", c.depthSize}});
-      break;
-    case render::ShadingMethod::RayMarch:
-      out.update({{"adaptive", c.adaptive},
-                  {c.adaptive ? "max_samples" : "march_samples",
-                   c.adaptive ? render::RayMarchSettings{}.maxSamples : c.samples}});
-      for (const auto& p : t.passes)
-        if (p.name == "ray-march") out["pass_ms"] = p.cpuMs;
-      break;
-    case render::ShadingMethod::Parallax:
-      out.update({{"layer_depth_mm", c.parallaxDepthMm},
-                  {"refractive_index", c.refractiveIndex.value_or(a.material.ior)},
-                  {"lightmap_size", c.lightmap.size},
-                  {"lightmap_reduction", c.lightmap.reduction},
-                  {"blur_radius_mm", c.lightmap.blurRadiusMm},
-                  {"blur_passes", c.lightmap.blurPasses},
-                  {"cull", c.cull},
-                  {"clip", c.clip}});
-      break;
-  }
+  auto out = nlohmann::json::parse(
+      studies::organRenderJson(s.assets(*organ), *method, o.choices, s.renderer().lastTimings()));
+  out.update({{"out", o.out},
+              {"width", o.width},
+              {"height", o.height},
+              {"gl_context", (*context)->info().backend},
+              {"gl_renderer", (*context)->info().renderer},
+              {"first_frame_ms", firstMs},
+              {"samples", o.samples}});
   printResult(global, out);
   return 0;
 }
@@ -147,8 +107,7 @@ void registerRenderCommand(CLI::App& app, const GlobalOptions& global, int& exit
       "--material", opts->material,
       "data/materials/<NAME>.json: optics and textures (default: the mesh's name, when there is one)");
   cmd->add_option("--out", opts->out, "output PNG (written atomically)")->required();
-  cmd->add_option("--width", opts->width, "image width, pixels (default 1024)");
-  cmd->add_option("--height", opts->height, "image height, pixels (default 768)");
+  addImageSizeOptions(cmd, opts->width, opts->height);
   cmd->add_option("--scale", opts->scale, "mm per file unit (default 1)");
   cmd->add_option("--samples", opts->samples, "MSAA samples (default 4; 0 = off)");
   cmd->add_option("--kernel", c.kernel,

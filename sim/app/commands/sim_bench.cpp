@@ -3,6 +3,7 @@
 // data organ and the default scenario in real time (tissue/studies/sim_bench.h).
 #include <iostream>
 
+#include "cli_options.h"
 #include "command.h"
 #include "organ_data.h"
 #include "output.h"
@@ -43,25 +44,22 @@ void registerSimBenchCommand(CLI::App& app, const GlobalOptions& global, int& ex
       exitCode = fail("sim-bench", "--max-springs must be at least 1000 and --frames at least 2");
       return;
     }
-    if (!o->scenarioIntegrator.empty() &&
-        !(c.scenarioIntegrator = sim::parseIntegrator(o->scenarioIntegrator))) {
-      exitCode = fail("sim-bench", "--scenario-integrator: unknown integrator \"" + o->scenarioIntegrator +
-                                       "\"; give explicit-euler, symplectic-euler, verlet, implicit-euler or "
-                                       "fast-mass-spring");
-      return;
+    if (!o->scenarioIntegrator.empty()) {
+      auto integrator = parseIntegratorOption("--scenario-integrator", o->scenarioIntegrator);
+      if (!integrator) return void(exitCode = fail("sim-bench", integrator.error().message));
+      c.scenarioIntegrator = *integrator;
     }
     if (c.scenarioFrames < 0) {
       exitCode = fail("sim-bench", "--scenario-frames must be >= 1 (0: the scenario's)");
       return;
     }
     if (!o->skipFramePath) {
-      c.framePathMesh = o->mesh.empty() ? dataDir() / "meshes" / "liver.obj" : std::filesystem::path(o->mesh);
+      c.framePathMesh = meshOrDefault(o->mesh);
       if (auto material = readDataMaterial(materialFileFor(c.framePathMesh)))
         c.framePathSigmaTPerMm = scene::firstLayerMinSigmaT(*material);
     }
     if (!o->skipScenario) {
-      c.scenario = o->scenario.empty() ? dataDir() / "scenarios" / "liver_poke_grasp.json"
-                                       : std::filesystem::path(o->scenario);
+      c.scenario = scenarioOrDefault(o->scenario);
       c.scenarioPaths.sharedMeshesDir = sharedDir() / "meshes";
     }
     auto bench = studies::runSimBench(c);

@@ -1,19 +1,15 @@
 // tissue-sim simulate SCENARIO.json: runs a scenario file (docs/SCENARIOS.md) and writes the
 // per-frame metrics (frames.csv), a summary (summary.json), and with --images a render of the
 // last frame.
-#include <algorithm>
-#include <cmath>
-#include <iostream>
-
+#include "cli_options.h"
 #include "command.h"
 #include "gl_environment.h"
-#include "loop_setup.h"
 #include "organ_data.h"
 #include "output.h"
 #include "tissue/core/atomic_file.h"
-#include "tissue/core/statistics.h"
 #include "tissue/core/stopwatch.h"
 #include "tissue/scenario/scenario_run.h"
+#include "tissue/studies/scenario_summary.h"
 
 namespace tissue::sim_app {
 namespace {
@@ -28,7 +24,9 @@ struct SimulateOptions {
 
 /// Renders the run's current shape, lit (a scene::Scene of the static organ on a headless context).
 Result<std::string> renderLastFrame(const scenario::ScenarioRun& run, const std::filesystem::path& png) {
-  auto context = createAppContext(offscreenRequest());
+  context::ContextRequest request;  // the scene draws offscreen
+  request.width = request.height = 16;
+  auto context = createAppContext(request);
   if (!context) return context.error();
   auto scene = scene::Scene::create((*context)->procAddressFunction(), dataSceneSettings());
   if (!scene) return scene.error();
@@ -40,55 +38,13 @@ Result<std::string> renderLastFrame(const scenario::ScenarioRun& run, const std:
   return png.filename().string();
 }
 
-nlohmann::json summaryJson(const scenario::ScenarioRun& run, const scenario::RunSummary& s,
-                           const std::vector<scenario::FrameMetrics>& frames, double wallMs) {
-  std::vector<double> total;
-  std::size_t samples = 0;
-  for (const auto& f : frames) {
-    total.push_back(f.totalMs);
-    samples += f.forceSamplesN.size();
-  }
-  const double simulatedS =
-      frames.empty() ? 0.0 : frames.back().timeS - frames.front().timeS + run.scenario().frameTime;
-  return {{"scenario", run.scenario().file.string()},
-          {"mesh", run.scenario().mesh.string()},
-          {"vertices", run.mesh().positions.size()},
-          {"simulated_vertices", run.simulator().system().vertexCount()},
-          {"springs", run.simulator().system().springs.size()},
-          {"substeps", run.simulator().substeps()},
-          {"integrator", sim::integratorName(run.simulator().integrator())},
-          {"frames", s.frames},
-          {"nan_frames", s.nanFrames},
-          {"divergence_events", s.divergenceEvents},
-          {"degraded_frames", s.degradedFrames},
-          {"frame_ms",
-           {{"median", quantile(total, 0.5)}, {"p99", quantile(total, 0.99)}, {"max", quantile(total, 1.0)}}},
-          {"max_factor_ms", s.maxFactorMs},
-          {"force_update_hz", simulatedS > 0.0 ? double(samples) / simulatedS : 0.0},
-          {"max_contact_force_N", s.maxForceN},
-          {"mean_contact_force_N", s.meanForceN},
-          {"ms_per_frame",
-           {{"integrate", s.meanIntegrateMs},
-            {"contact", s.meanContactMs},
-            {"check", s.meanCheckMs},
-            {"rollback", s.meanRollbackMs},
-            {"actions", s.meanActionMs},
-            {"total", s.meanTotalMs}}},
-          {"wall_ms", wallMs}};
-}
-
 int runSimulate(const SimulateOptions& o, const GlobalOptions& global) {
-  auto parsed = scenario::loadScenario(o.scenario, {.sharedMeshesDir = sharedDir() / "meshes"});
+  auto parsed = loadScenarioFile("simulate", o.scenario);
   if (!parsed) return fail("simulate", parsed.error().message);
-  for (const std::string& warning : parsed->warnings)  // e.g. a Poisson ratio springs cannot realise
-    std::cerr << "tissue-sim simulate: warning: " << warning << "\n";
   if (o.frames > 0) parsed->frames = o.frames;
   if (!o.integrator.empty()) {
-    const auto integrator = sim::parseIntegrator(o.integrator);
-    if (!integrator)
-      return fail("simulate", "--integrator: unknown integrator \"" + o.integrator +
-                                  "\"; give explicit-euler, symplectic-euler, verlet, implicit-euler or "
-                                  "fast-mass-spring");
+    const auto integrator = parseIntegratorOption("--integrator", o.integrator);
+    if (!integrator) return fail("simulate", integrator.error().message);
     parsed->integrator = *integrator;
   }
   auto run = scenario::ScenarioRun::create(*parsed);
@@ -105,14 +61,7 @@ int runSimulate(const SimulateOptions& o, const GlobalOptions& global) {
     if (!m) return fail("simulate", m.error().message);
     frames.push_back(*m);
   }
-  nlohmann::json summary = summaryJson(**run, scenario::summarize(frames), frames, wall.elapsedMs());
-  // Each frame's work, counted (issue 14): the worst frame against the simulator's stated bound.
-  const scenario::RunSummary work = scenario::summarize(frames);
-  summary["max_frame_steps"] = work.maxFrameSteps;
-  summary["max_frame_solver_iterations"] = work.maxFrameSolverIterations;
-  summary["frame_work_bound"] = {{"steps", (*run)->frameWorkBound().steps},
-                                 {"solver_iterations", (*run)->frameWorkBound().solverIterations}};
-  summary["tool_teleports"] = work.teleports;
+  auto summary = nlohmann::json::parse(studies::scenarioRunSummaryJson(**run, frames, wall.elapsedMs()));
   if (auto ok = writeTextFileAtomic(out / "frames.csv", scenario::framesCsv(frames)); !ok)
     return fail("simulate", ok.error().message);
   summary["frames_csv"] = (out / "frames.csv").string();

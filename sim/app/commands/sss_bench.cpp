@@ -5,6 +5,7 @@
 
 #include "tissue/studies/sss_bench.h"
 #include "../organ_data.h"
+#include "cli_options.h"
 #include "command.h"
 #include "gl_environment.h"
 #include "output.h"
@@ -14,7 +15,7 @@ namespace tissue::sim_app {
 namespace {
 
 struct BenchOptions {
-  std::string mesh = (dataDir() / "meshes" / "liver.obj").string();
+  std::string mesh;     // empty: data/meshes/liver.obj
   ReportPlaces places;  // --out: the report (sss_bench.md, .csv, .json)
   studies::SssBenchConfig config;
 };
@@ -23,12 +24,10 @@ int run(BenchOptions o, const GlobalOptions& global) {
   const char* cmd = "sss-bench";
   auto context = createAppContext({}, false);
   if (!context) return fail(cmd, context.error().message);
-  auto renderer = render::Renderer::create(
-      (*context)->procAddressFunction(),
-      {.shaders = shaderSettingsFromEnvironment(), .samples = o.config.samples, .gpuTimers = false});
+  auto renderer = createAppRenderer(**context, o.config.samples, false);
   if (!renderer) return fail(cmd, renderer.error().message);
   o.config.glRenderer = (*context)->info().renderer;
-  auto bench = studies::runSssBench(*renderer, organSourceFor(o.mesh), o.config);
+  auto bench = studies::runSssBench(*renderer, organSourceFor(meshOrDefault(o.mesh)), o.config);
   if (!bench) return fail(cmd, bench.error().message);
   return finishStudy(cmd, std::move(bench->output), o.places, global);
 }
@@ -40,8 +39,7 @@ void registerSssBenchCommand(CLI::App& app, const GlobalOptions& global, int& ex
   auto* cmd = app.add_subcommand("sss-bench",
                                  "time SSS methods and measure their image RMS against the CPU reference");
   cmd->add_option("--mesh", o->mesh, "organ mesh with UVs (default data/meshes/liver.obj)");
-  cmd->add_option("--width", o->config.width, "image width, pixels (default 320)");
-  cmd->add_option("--height", o->config.height, "image height, pixels (default 240)");
+  addImageSizeOptions(cmd, o->config.width, o->config.height);
   cmd->add_option("--frames", o->config.frames, "timed frames per setting (default 5)");
   cmd->add_option("--samples", o->config.samples, "MSAA samples (default 0 = off)");
   cmd->add_option("--out", o->places.out, "folder for the report: sss_bench.md, .csv, .json (created)");

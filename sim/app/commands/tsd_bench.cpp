@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "cli_options.h"
 #include "command.h"
 #include "gl_environment.h"
 #include "output.h"
@@ -25,7 +26,7 @@ struct BenchOptions {
 
 int run(BenchOptions o, const GlobalOptions& global) {
   const char* cmd = "tsd-bench";
-  const auto meshPath = o.mesh.empty() ? dataDir() / "meshes" / "liver.obj" : std::filesystem::path(o.mesh);
+  const auto meshPath = meshOrDefault(o.mesh);
   auto organ = studies::loadTsdOrgan(meshPath, o.scale);
   if (!organ) return fail(cmd, organ.error().message);
   o.config.skinTable = sharedDir() / "reference" / "deon_skin_gaussians.tsv";
@@ -39,9 +40,7 @@ int run(BenchOptions o, const GlobalOptions& global) {
   {  // The GL context lives in this scope only: VTK's chart needs its own (GLX) context afterwards.
     auto context = createAppContext({}, false);
     if (!context) return fail(cmd, context.error().message);
-    auto renderer = render::Renderer::create(
-        (*context)->procAddressFunction(),
-        {.shaders = shaderSettingsFromEnvironment(), .samples = 0, .gpuTimers = false});
+    auto renderer = createAppRenderer(**context, 0, false);
     if (!renderer) return fail(cmd, renderer.error().message);
     o.config.glRenderer = (*context)->info().renderer;
     auto r = studies::runTsdBench(*renderer, *organ, o.config);
@@ -60,8 +59,7 @@ void registerTsdBenchCommand(CLI::App& app, const GlobalOptions& global, int& ex
                                  "diffusion by organ count and distance");
   cmd->add_option("--mesh", o->mesh, "organ mesh (default data/meshes/liver.obj); no UVs: automatic atlas");
   cmd->add_option("--scale", o->scale, "mm per file unit (default 1)");
-  cmd->add_option("--width", o->config.width, "image width, pixels (default 320)");
-  cmd->add_option("--height", o->config.height, "image height, pixels (default 200)");
+  addImageSizeOptions(cmd, o->config.width, o->config.height);
   cmd->add_option("--map-size", o->config.mapSize, "T_max, irradiance map texels (default 256)");
   cmd->add_option("--gaussians", o->config.gaussians, "profile terms: 2, 4 or 6 (default 6)");
   cmd->add_option("--repeats", o->config.repeats, "timed frames per cell and path (default 3; median)");

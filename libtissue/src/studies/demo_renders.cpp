@@ -1,12 +1,20 @@
-// The demo's method renders of its poked organ through the scene module (demo_render.h).
-#include "demo_render.h"
+// The main job's method renders of its poked organ, and the scene a host embeds (demo_renders.h).
+#include "demo_renders.h"
 
-#include "pass_timings_json.h"
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "loop_detail.h"
 #include "tissue/core/image.h"
+#include "tissue/core/statistics.h"
+#include "tissue/core/stopwatch.h"
+#include "tissue/studies/demo_run.h"
 #include "tissue/studies/raymarch_scene.h"
 #include "tissue/studies/sss_bench.h"
 
-namespace tissue::sim_app {
+namespace tissue::studies::detail {
+
 namespace {
 
 nlohmann::json skipped(const std::string& why) {
@@ -22,7 +30,7 @@ Result<Image8> renderIn(scene::Scene& s, render::ShadingMethod method, int width
 }
 
 nlohmann::json timings(const render::RenderTimings& t) {
-  return {{"passes", passTimingsJson(t)}, {"total_cpu_ms", t.totalCpuMs}};
+  return {{"passes", passTimings(t)}, {"total_cpu_ms", t.totalCpuMs}};
 }
 
 }  // namespace
@@ -53,7 +61,7 @@ nlohmann::json renderSubsurface(scene::Scene& s, const std::filesystem::path& pn
   // pre-blur diffuse (texture-space pixels hold their diffused radiance in the Diffuse view).
   auto truth = scene::separableTruth(s.assets(0), choices);
   if (diffuse && position && truth)
-    if (auto e = studies::lastFrameReferenceError(s.renderer(), *diffuse, *position, *truth)) {
+    if (auto e = lastFrameReferenceError(s.renderer(), *diffuse, *position, *truth)) {
       j["reference_ms"] = e->referenceMs;
       j["image_rms"] = e->imageRms;
       j["relative_rms"] = e->relativeRms;
@@ -71,15 +79,6 @@ nlohmann::json renderParallax(scene::Scene& s, const std::filesystem::path& png,
             {"layer_depth_mm", choices.parallaxDepthMm},
             {"refractive_index", choices.refractiveIndex.value_or(s.assets(0).material.ior)}});
   return j;
-}
-
-Result<void> frameForRayMarch(scene::Scene& s, const mesh::DeformableSurface& surface, float aspect,
-                              bool closeUp) {
-  auto framing = studies::rayMarchSceneFor(surface, s.assets(0), aspect, closeUp);
-  if (!framing) return framing.error();
-  s.setCamera(framing->camera);
-  s.renderScene().lights = studies::pipelineLights(*framing);
-  return {};
 }
 
 nlohmann::json renderRayMarch(scene::Scene& s, const mesh::DeformableSurface& surface,
@@ -102,4 +101,66 @@ nlohmann::json renderRayMarch(scene::Scene& s, const mesh::DeformableSurface& su
   return report;
 }
 
-}  // namespace tissue::sim_app
+nlohmann::json renderEmbeddedScene(const scene::SceneSettings& settings, const std::filesystem::path& dataDir,
+                                   const std::filesystem::path& outDir, int width, int height) {
+  auto fail = [](const std::string& why) { return nlohmann::json{{"skipped", why}}; };
+  // The scene on its own headless context, with the caller's settings (the app reads the environment).
+  auto made = scene::Scene::create({}, settings);
+  if (!made) return fail(made.error().message);
+  scene::Scene& s = *made;
+  // Organ 1: the liver as its scenario moves it, separable SSS.
+  scene::OrganDesc simulated;
+  simulated.scenario = dataDir / "scenarios" / "liver_poke_grasp.json";
+  simulated.material = dataDir / "materials" / "liver.json";
+  simulated.method = render::ShadingMethod::Separable;
+  auto liver = s.addOrgan(simulated);
+  if (!liver) return fail(liver.error().message);
+  // Organ 2: a static copy, a quarter turn about z, scaled 0.6, 170 mm to the side, texture space.
+  scene::OrganDesc copy;
+  copy.mesh = dataDir / "meshes" / "liver.obj";
+  copy.material = simulated.material;
+  copy.method = render::ShadingMethod::TextureSpace;
+  const float c = 0.0f, sn = 0.6f;  // 0.6 x (cos 90°, sin 90°)
+  copy.model = {c, sn, 0, 0, -sn, c, 0, 0, 0, 0, 0.6f, 0, 170.0f, 0, -10.0f, 1};
+  auto aside = s.addOrgan(copy);
+  if (!aside) return fail(aside.error().message);
+  // A host's frames: 1 s to settle, then the instrument comes down 10 mm into the top.
+  std::vector<double> stepMs;
+  for (int frame = 0; frame < 160; ++frame) {
+    if (frame >= 60) {
+      const float down = std::min(1.0f, float(frame - 60) / 80.0f);
+      if (auto p = s.setInstrumentPose({.tipMm = {31.82f, 0.0f, 75.0f - 25.7f * down}, .radiusMm = 8.0f}); !p)
+        return fail(p.error().message);
+    }
+    Stopwatch watch;
+    auto step = s.step(1.0 / 60.0);
+    if (!step) return fail(step.error().message);
+    stepMs.push_back(watch.elapsedMs());
+  }
+  const auto png = outDir / "frame_embedded_scene.png";
+  if (auto r = s.renderPng(png, width, height); !r) return fail(r.error().message);
+  const Float3 f = s.instrumentForceN();
+  const auto t = summarizeSamples(stepMs);
+  return {
+      {"image", png.filename().string()},
+      {"organs",
+       {{{"method", "separable"}, {"simulated", true}},
+        {{"method", "texture-space"}, {"simulated", false}, {"model", "quarter turn about z, scale 0.6"}}}},
+      {"force_at_10mm_N", {f.x, f.y, f.z}},
+      {"step_ms", {{"median", t.median}, {"p99", t.p99}, {"max", t.max}}}};
+}
+
+}  // namespace tissue::studies::detail
+
+namespace tissue::studies {
+
+Result<void> frameForRayMarch(scene::Scene& s, const mesh::DeformableSurface& surface, float aspect,
+                              bool closeUp) {
+  auto framing = rayMarchSceneFor(surface, s.assets(0), aspect, closeUp);
+  if (!framing) return framing.error();
+  s.setCamera(framing->camera);
+  s.renderScene().lights = pipelineLights(*framing);
+  return {};
+}
+
+}  // namespace tissue::studies

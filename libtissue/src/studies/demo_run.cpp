@@ -1,52 +1,57 @@
-#include "demo_scenario.h"
-#include "demo_embedded.h"
+// The main job (demo_run.h): the default scenario through the trainee's loop, its snapshots in
+// every method, the scene a host embeds, and the report.
+#include "tissue/studies/demo_run.h"
 
-#include <algorithm>
-#include <cmath>
-#include <fstream>
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <sstream>
 
-#include "demo_render.h"
-#include "gl_environment.h"
-#include "loop_setup.h"
-#include "organ_data.h"
-#include "output.h"
-#include "pass_timings_json.h"
+#include "demo_renders.h"
+#include "json_text.h"
+#include "loop_detail.h"
 #include "tissue/core/atomic_file.h"
 #include "tissue/core/image.h"
-#include "tissue/core/statistics.h"
-#include "tissue/core/stopwatch.h"
 #include "tissue/inspect/vtk_export.h"
-#include "tissue/mesh/deformable_surface.h"
 #include "tissue/scenario/scenario_run.h"
 #include "tissue/scene/organ_loop.h"
 #include "tissue/scene/session.h"
 #include "tissue/scene/surface_inspection.h"
+#include "tissue/studies/loop_report.h"
 
-namespace tissue::sim_app {
+namespace tissue::studies {
 namespace {
+
+/// `x` as a C++ stream writes it (6 significant digits): the Markdown's rounded figures.
+std::string streamed(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
 
 /// The contact force summary, and the force every 50 frames.
 void instrumentMarkdown(const nlohmann::json& i, std::ostringstream& md) {
   md << "## Instrument\n\n"
      << "- frames: " << i["frames"] << ", frames with NaN: " << i["nan_frames"]
      << ", divergence events: " << i["divergence_events"] << "\n"
-     << "- contact force on the tool: max " << rounded(i["max_contact_force_N"].get<double>()) << " N, mean "
-     << rounded(i["mean_contact_force_N"].get<double>()) << " N (every frame in report.json and frames.csv)\n"
-     << "- deepest push " << rounded(i["max_push_N"].get<double>()) << " N, strongest pull while grasping "
-     << rounded(i["max_pull_N"].get<double>()) << " N\n"
+     << "- contact force on the tool: max " << threeDigits(i["max_contact_force_N"].get<double>())
+     << " N, mean " << threeDigits(i["mean_contact_force_N"].get<double>())
+     << " N (every frame in report.json and frames.csv)\n"
+     << "- deepest push " << threeDigits(i["max_push_N"].get<double>())
+     << " N, strongest pull while grasping " << threeDigits(i["max_pull_N"].get<double>()) << " N\n"
      << "- deepest poke at frame " << i["poked_frame"] << ", strongest lift at frame " << i["lifted_frame"]
-     << "\n\n"
-     << "| frame | F_x (N) | F_y (N) | F_z (N) |\n|---|---|---|---|\n";
-  const auto& forces = i["contact_force_N_per_frame"];
-  for (std::size_t f = 0; f < forces.size(); f += 50)
-    md << "| " << f << " | " << rounded(forces[f][0].get<double>()) << " | "
-       << rounded(forces[f][1].get<double>()) << " | " << rounded(forces[f][2].get<double>()) << " |\n";
+     << "\n\n";
+  Table forces{.header = {"frame", "F_x (N)", "F_y (N)", "F_z (N)"}, .rows = {}};
+  const auto& perFrame = i["contact_force_N_per_frame"];
+  for (std::size_t f = 0; f < perFrame.size(); f += 50)
+    forces.rows.push_back({std::to_string(f), streamed(threeDigits(perFrame[f][0].get<double>())),
+                           streamed(threeDigits(perFrame[f][1].get<double>())),
+                           streamed(threeDigits(perFrame[f][2].get<double>()))});
+  md << markdownTable(forces);
 }
 
-std::string markdownReport(const nlohmann::json& r) {
+/// report.md: the run, the instrument, the loop's phases (`phases`, loopPhasesTable), the re-fit, the render.
+std::string markdownReport(const nlohmann::json& r, const Table& phases) {
   std::ostringstream md;
   md << "# tissue demo report\n\n"
      << "Mesh `" << r["mesh"].get<std::string>() << "`: " << r["vertices"] << " vertices, " << r["triangles"]
@@ -56,11 +61,7 @@ std::string markdownReport(const nlohmann::json& r) {
      << " springs): a sphere pokes, grasps, lifts and releases the organ over " << r["frames"]
      << " frames.\n\n";
   instrumentMarkdown(r["instrument"], md);
-  md << "\n## The frame loop: simulate, mesh, upload, render, every frame (ms)\n\n"
-     << "| phase | median | p99 | max |\n|---|---|---|---|\n";
-  for (const auto& p : r["phases_ms"])
-    md << "| " << p["phase"].get<std::string>() << " | " << p["median_ms"] << " | " << p["p99_ms"] << " | "
-       << p["max_ms"] << " |\n";
+  md << "\n## The frame loop: simulate, mesh, upload, render, every frame (ms)\n\n" << markdownTable(phases);
   if (r.contains("sequence") && r["sequence"].contains("image"))
     md << "\nEvery " << r["image_every"] << " frames: ![sequence]("
        << r["sequence"]["image"].get<std::string>() << ")\n";
@@ -91,36 +92,35 @@ struct DemoSetup {
   const scene::OrganLoop& organLoop() const { return *loop->loop(0); }
 };
 
-Result<DemoSetup> setUp(const DemoOptions& o, nlohmann::json& report) {
-  if (o.frames < 0) return Error{"--frames must be at least 1 (0: the scenario's)"};
+Result<DemoSetup> setUp(const DemoConfig& o, const scene::SceneSettings& settings, nlohmann::json& report) {
+  if (o.frames < 0) return Error{"DemoConfig::frames must be at least 1 (0: the scenario's)"};
   DemoSetup d;
-  if (auto context = createAppContext(offscreenRequest()); context)  // the scenes draw offscreen
+  if (auto context = detail::offscreenContext(settings, o.logContext); context)  // the scenes draw offscreen
     d.context = std::move(*context);
   else
     report["render_skipped"] = context.error().message;  // simulate and update the mesh all the same
-  auto loop = makeLoopScene(d.context.get());
+  auto loop = detail::makeLoopScene(d.context.get(), settings);
   if (!loop) return loop.error();
   d.loop.emplace(std::move(*loop));
   const scene::OrganDesc organ{.mesh = o.meshFile,
                                .scenario = o.scenarioFile.empty()
-                                               ? dataDir() / "scenarios" / "liver_poke_grasp.json"
-                                               : std::filesystem::path(o.scenarioFile)};
+                                               ? o.dataDir / "scenarios" / "liver_poke_grasp.json"
+                                               : o.scenarioFile};
   if (auto added = d.loop->addOrgan(organ); !added) return added.error();
   const scenario::Scenario& sc = d.organLoop().run().scenario();
   auto surface = mesh::DeformableSurface::create(d.organ().mesh, d.organ().planes);
   if (!surface) return surface.error();
   d.surface.emplace(std::move(*surface));
   if (!d.context) return d;
-  scene::SceneSettings settings = dataSceneSettings();
-  settings.renderer.samples = 4;
-  settings.renderer.finishPasses = true;  // each pass timed to its end
-  auto snapshots = scene::Scene::create(d.context->procAddressFunction(), settings);
+  scene::SceneSettings snapshotSettings = settings;
+  snapshotSettings.renderer.samples = 4;
+  snapshotSettings.renderer.finishPasses = true;  // each pass timed to its end
+  auto snapshots = scene::Scene::create(d.context->procAddressFunction(), snapshotSettings);
   if (!snapshots) return snapshots.error();
   d.snapshots.emplace(std::move(*snapshots));
-  auto added =
-      d.snapshots->addOrgan({.mesh = o.meshFile.empty() ? sc.mesh : std::filesystem::path(o.meshFile),
-                             .material = d.organ().material.file,
-                             .meshScaleToMm = float(sc.meshScaleToMm)});
+  auto added = d.snapshots->addOrgan({.mesh = o.meshFile.empty() ? sc.mesh : o.meshFile,
+                                      .material = d.organ().material.file,
+                                      .meshScaleToMm = float(sc.meshScaleToMm)});
   if (!added) return added.error();
   return d;
 }
@@ -143,7 +143,7 @@ nlohmann::json writeMontage(const std::filesystem::path& dir, const std::vector<
 
 /// The snapshot organ in the state `positions`, lit, into `png`.
 void renderSnapshot(DemoSetup& d, std::span<const Float3> positions, const std::filesystem::path& png,
-                    const DemoOptions& o, std::vector<std::string>& images, nlohmann::json& report) {
+                    const DemoConfig& o, std::vector<std::string>& images, nlohmann::json& report) {
   d.surface->update(positions);
   auto ok = d.snapshots->setPositions(0, positions);
   if (ok) ok = d.snapshots->renderPng(png, o.width, o.height);
@@ -161,7 +161,7 @@ struct LoopResult {
 
 /// The trainee's loop, headless: every frame simulates, updates the mesh, uploads and renders
 /// (Scene::advance, the library's loop); every `imageEvery` frames the rendered image is written.
-Result<LoopResult> runFrames(DemoSetup& d, const DemoOptions& o) {
+Result<LoopResult> runFrames(DemoSetup& d, const DemoConfig& o) {
   LoopResult r;
   Image8 image;
   Image8* target = d.context ? &image : nullptr;
@@ -185,31 +185,12 @@ Result<LoopResult> runFrames(DemoSetup& d, const DemoOptions& o) {
   return r;
 }
 
-nlohmann::json instrumentReport(const scene::LoopRecord& r) {
-  const auto s = scenario::summarize(r.frames);
-  nlohmann::json forces = nlohmann::json::array();
-  for (const auto& f : r.frames)
-    forces.push_back({f.forceN.x, f.forceN.y, f.forceN.z});
-  return {{"frames", s.frames},
-          {"nan_frames", s.nanFrames},
-          {"divergence_events", s.divergenceEvents},
-          {"max_contact_force_N", s.maxForceN},
-          {"mean_contact_force_N", s.meanForceN},
-          {"max_push_N", r.maxPushN},
-          {"max_pull_N", r.maxPullN},
-          {"poked_frame", r.pokedFrame},
-          {"lifted_frame", r.liftedFrame},
-          {"ms_per_frame",
-           {{"integrate", s.meanIntegrateMs}, {"contact", s.meanContactMs}, {"check", s.meanCheckMs}}},
-          {"contact_force_N_per_frame", forces}};
-}
-
 }  // namespace
 
-Result<nlohmann::json> runDemo(const DemoOptions& o) {
+Result<DemoRun> runDemo(const DemoConfig& o, const scene::SceneSettings& settings) {
   // Setup: the organ, its material, the scenes that move and draw it, and the snapshots' surface.
   nlohmann::json report;
-  auto setup = setUp(o, report);
+  auto setup = setUp(o, settings, report);
   if (!setup) return setup.error();
   DemoSetup& d = *setup;
   std::vector<std::string> images;
@@ -248,19 +229,19 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
                           {"gl_renderer", i.renderer},
                           {"gl_version", i.version},
                           {"last_frame_ms", {{"upload_cpu", t.uploadCpuMs}, {"total_cpu", t.totalCpuMs}}},
-                          {"last_frame_passes", passTimingsJson(t)},
+                          {"last_frame_passes", detail::passTimings(t)},
                           {"images", images}};
     }
     scene::Scene& s = *d.snapshots;
     report["render_separable"] =
-        renderSubsurface(s, o.outDir / "frame_poked_separable.png", o.width, o.height, false);
+        detail::renderSubsurface(s, o.outDir / "frame_poked_separable.png", o.width, o.height, false);
     report["texture_space"] =
-        renderSubsurface(s, o.outDir / "frame_poked_texture_space.png", o.width, o.height, true);
-    report["parallax"] = renderParallax(s, o.outDir / "frame_poked_parallax.png", o.width, o.height);
-    report["raymarch"] = renderRayMarch(s, *d.surface, o.outDir, o.width, o.height);
+        detail::renderSubsurface(s, o.outDir / "frame_poked_texture_space.png", o.width, o.height, true);
+    report["parallax"] = detail::renderParallax(s, o.outDir / "frame_poked_parallax.png", o.width, o.height);
+    report["raymarch"] = detail::renderRayMarch(s, *d.surface, o.outDir, o.width, o.height);
     // The scene a host embeds (scene::Scene on its own context, as the C API and the example
     // hosts use it): the simulated liver and a turned, scaled static copy, poked by a host.
-    report["embedded_scene"] = renderEmbeddedScene(o.outDir, o.width, o.height);
+    report["embedded_scene"] = detail::renderEmbeddedScene(settings, o.dataDir, o.outDir, o.width, o.height);
     (void)d.context->makeCurrent();  // the demo's scenes are freed with their context current
     report["methods"] = writeMontage(o.outDir,
                                      {"frame_poked_separable.png", "frame_poked_texture_space.png",
@@ -291,17 +272,20 @@ Result<nlohmann::json> runDemo(const DemoOptions& o) {
   report["frames"] = r.frames.size();
   report["image_every"] = o.imageEvery;
   report["loop_image_size"] = {o.loopWidth, o.loopHeight};
-  report["instrument"] = instrumentReport(r);
-  report["phases_ms"] = phaseReport(r.phases);
+  report["instrument"] = detail::instrument(r);
+  report["phases_ms"] = detail::loopPhases(r.phases);
   report["refit"] = {{"mean_refitted_fraction", r.meanRefittedFraction()},
                      {"tolerance_rad", organLoop.surface().planeRefit().maxNormalErrorRad},
                      {"max_normal_deviation_rad", deviation.maxAngleRad},
                      {"max_offset_deviation_mm", deviation.maxOffsetMm}};
   report["out"] = o.outDir.string();
-  if (auto w = writeTextFileAtomic(o.outDir / "report.json", report.dump(2) + "\n"); !w) return w.error();
-  if (auto w = writeTextFileAtomic(o.outDir / "report.md", markdownReport(report)); !w) return w.error();
+  DemoRun out;
+  out.report.add("report.json", detail::jsonText(report));
+  out.report.add("report.md", markdownReport(report, loopPhasesTable(r.phases)));
+  if (auto w = writeReport(o.outDir, out.report); !w) return w.error();
   report["instrument"].erase("contact_force_N_per_frame");  // stdout: the summary; files: every frame
-  return report;
+  out.json = report.dump();
+  return out;
 }
 
-}  // namespace tissue::sim_app
+}  // namespace tissue::studies
