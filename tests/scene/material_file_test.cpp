@@ -1,6 +1,7 @@
 // The one reader of material files and what every method derives from it.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "tissue/scene/material_file.h"
@@ -23,7 +24,8 @@ TEST(MaterialFile, TheDataLiverHasItsFiveLayersAndEveryTexture) {
   EXPECT_EQ(m->name, "liver");
   ASSERT_EQ(m->layers.size(), 5u);  // 4 boundaries of one RGBA map bound 4 + 1 layers (François §2.1)
   EXPECT_FLOAT_EQ(m->depthScaleMm, 3.0f);
-  EXPECT_FLOAT_EQ(m->ior, 1.3f);
+  EXPECT_FLOAT_EQ(m->ior, 1.38f);  // Jacques 2013 eq. 3 with W = 0.7
+  EXPECT_TRUE(m->baseColorDetail);
   for (const auto* t : {&m->textures.subsurface, &m->textures.baseColor, &m->textures.normalMap,
                         &m->textures.opacity, &m->textures.innerBase})
     EXPECT_TRUE(std::filesystem::exists(*t)) << t->string();
@@ -57,6 +59,32 @@ TEST(MaterialFile, TheLayerStackOfTheDataLiverValidates) {
   EXPECT_EQ(stack->boundaryCount(), 4);
   EXPECT_EQ(stack->layers.size(), 5u);
   EXPECT_FLOAT_EQ(stack->depthScaleMm, 3.0f);
+}
+
+TEST(MaterialFile, TheColourComesFromTheOptics) {
+  auto m = readMaterialFile(kData / "materials" / "liver.json");
+  ASSERT_TRUE(m.ok()) << m.error().message;
+  // Liver is red: blood absorbs green and blue (Bosschaart 2014), so the albedo is red-dominant.
+  const Float3 a = opticalAlbedo(*m);
+  EXPECT_GT(a.x, 5.0f * a.y);
+  EXPECT_GT(a.x, 5.0f * a.z);
+  EXPECT_LT(a.x, 1.0f);
+  // Blood (layer 2) reflects less red than the parenchyma: vessels show darker.
+  EXPECT_LT(layerReflectance(*m, 2).total.x, a.x);
+  // The artist's term: on, the painted luminance varies the texels; off, one flat albedo.
+  Image8 painted(2, 1, 4);
+  painted.at(0, 0)[0] = painted.at(0, 0)[1] = painted.at(0, 0)[2] = 60;
+  painted.at(1, 0)[0] = painted.at(1, 0)[1] = painted.at(1, 0)[2] = 200;
+  const Image8 detail = opticalBaseColor(*m, &painted);
+  ASSERT_EQ(detail.width, 2);
+  EXPECT_LT(detail.at(0, 0)[0], detail.at(1, 0)[0]);
+  m->baseColorDetail = false;
+  const Image8 flat = opticalBaseColor(*m, &painted);
+  EXPECT_EQ(flat.at(0, 0)[0], flat.at(1, 1)[0]);
+  EXPECT_EQ(flat.at(0, 0)[1], flat.at(3, 3)[1]);
+  // sRGB of the linear albedo, red channel.
+  const float r = a.x <= 0.0031308f ? 12.92f * a.x : 1.055f * std::pow(a.x, 1.0f / 2.4f) - 0.055f;
+  EXPECT_NEAR(flat.at(0, 0)[0], 255.0f * r, 1.0f);
 }
 
 TEST(MaterialFile, ErrorsNameTheFileAndTheKey) {
