@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "tissue/scene/material_file.h"
+#include "tissue/scene/truth_material.h"
 
 namespace tissue::scene {
 namespace {
@@ -49,13 +50,39 @@ TEST(MaterialFile, TheOpticalMaterialIsTheFirstLayerWithAbsorptionLeftOver) {
   EXPECT_FLOAT_EQ(firstLayerMinSigmaT(*m), std::min({l.sigmaT.x, l.sigmaT.y, l.sigmaT.z}));
 }
 
-TEST(MaterialFile, TheLayerStackOfTheDataLiverValidates) {
+// The truth's material (truth_material.h) from the same file and map: the truth renders the same organ.
+void expectSameTruth(const MaterialFile* m, const Image8& map) {
+  auto t = truthMaterial(*m, map);
+  ASSERT_TRUE(t.ok()) << t.error().message;
+  ASSERT_EQ(t->layers.size(), m->layers.size());
+  EXPECT_EQ(t->maps.mapCount, 1);
+  EXPECT_FLOAT_EQ(t->depthScaleMm, m->depthScaleMm);
+  for (std::size_t i = 0; i < m->layers.size(); ++i) {
+    const MaterialLayer& l = m->layers[i];
+    EXPECT_NEAR((*t->layers[i].sigmaA)[1], double(l.sigmaT.y) - double(l.sigmaS.y), 1e-9);
+    EXPECT_NEAR((*t->layers[i].sigmaS)[2], double(l.sigmaS.z), 1e-9);
+    EXPECT_NEAR(t->layers[i].g[0], double(l.g), 1e-9);
+    EXPECT_NEAR(t->layers[i].n, double(m->ior), 1e-6);
+  }
+  const double thickness[] = {0.5, 0.5, 0.5, 0.5};
+  auto slab = truthMaterial(*m, thickness);
+  ASSERT_TRUE(slab.ok()) << slab.error().message;
+  EXPECT_DOUBLE_EQ(slab->layers[3].thicknessMm, 0.5);
+  EXPECT_TRUE(std::isinf(slab->layers[4].thicknessMm));
+  const double tooFew[] = {0.5};
+  auto bad = truthMaterial(*m, tooFew);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().message.find("liver.json"), std::string::npos);
+}
+
+TEST(MaterialFile, TheLayerStackAndTheTruthOfTheDataLiverValidate) {
   auto m = readMaterialFile(kData / "materials" / "liver.json");
   ASSERT_TRUE(m.ok()) << m.error().message;
   auto map = readImage(m->textures.subsurface, 4);
   ASSERT_TRUE(map.ok()) << map.error().message;
   auto stack = layerStack(*m, *map);
   ASSERT_TRUE(stack.ok()) << stack.error().message;
+  expectSameTruth(&*m, *map);
   EXPECT_EQ(stack->boundaryCount(), 4);
   EXPECT_EQ(stack->layers.size(), 5u);
   EXPECT_FLOAT_EQ(stack->depthScaleMm, 3.0f);
