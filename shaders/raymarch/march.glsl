@@ -14,6 +14,8 @@ uniform int u_boundaryCount;                   // 4N
 uniform vec3 u_sigmaS[TISSUE_MAX_LAYERS];      // mm^-1
 uniform vec3 u_sigmaT[TISSUE_MAX_LAYERS];      // mm^-1
 uniform float u_schlickK[TISSUE_MAX_LAYERS];   // Schlick k per layer
+uniform vec3 u_multipleAlbedo[TISSUE_MAX_LAYERS];  // multiple-scattered reflectance per layer (0: none)
+uniform vec3 u_sigmaTr[TISSUE_MAX_LAYERS];     // effective transport coefficient per layer, mm^-1
 uniform sampler2D u_subsurface0;               // boundaries 0-3, 0..1 of u_depthScale
 uniform sampler2D u_subsurface1;               // boundaries 4-7
 uniform float u_depthScale;                    // mm per unit of the maps
@@ -112,7 +114,9 @@ Frame makeFrame(vec3 P, vec3 toEye, vec3 normal, vec4 tangent, vec4 plane, vec2 
 }
 
 // Eq. 5 with n samples at t_i = (i + jitter) dt; returns the radiance (rgb) and samples used (a).
-vec4 marchSingleScattering(Frame f, int n, float jitter) {
+// lightWeight[l] scales light l's reduced intensity: the Fresnel transmittance of its entry
+// (raymarch.frag; 1 for the CPU model, which has no boundary).
+vec4 marchSingleScattering(Frame f, int n, float jitter, float lightWeight[MAX_LIGHTS]) {
   float dt = f.tMax / float(n);
   vec3 L = vec3(0.0), attenuation = vec3(1.0);
   int used = 0;
@@ -128,11 +132,34 @@ vec4 marchSingleScattering(Frame f, int n, float jitter) {
       if (l >= u_lightCount) break;
       vec3 wi = lightDirection(l, M);
       float phase = schlickPhase(-dot(wi, f.wo), u_schlickK[layer]);
-      vec3 Lri = u_lightRadiance[l] * reducedIntensity(f, bM, M, t, wi);
+      vec3 Lri = lightWeight[l] * u_lightRadiance[l] * reducedIntensity(f, bM, M, t, wi);
       L += u_sigmaS[layer] * phase * Lri * attenuation * dt;
     }
     used = i + 1;
     if (u_threshold > 0.0 && max(attenuation.x, max(attenuation.y, attenuation.z)) < u_threshold) break;
   }
   return vec4(L, float(used));
+}
+
+// The multiple-scattered reflectance under the pixel (the diffusion term the march lacks:
+// François et al. 2006 §4 leaves multiple scattering to future work; Norberg 2010 §1.1: it
+// low-passes the light, §5.1: one colour per layer). Each layer i spanning depths [z_i, z_i+1]
+// (the boundaries at the pixel) contributes its half-space albedo u_multipleAlbedo[i] in
+// proportion to the share of the diffusely reflected light that visits it: in diffusion theory
+// both the fluence and the chance to escape fall off as exp(-sigma_tr z), so the reflected light
+// samples depth z with weight exp(-2 tau(z)), tau the sigma_tr-optical depth through the layers
+// above. A homogeneous stack gives the one albedo exactly; the last layer takes what is left.
+vec3 multipleScatteringAlbedo(float b[8]) {
+  vec3 R = vec3(0.0), above = vec3(1.0);
+  for (int i = 0; i < TISSUE_MAX_LAYERS; ++i) {
+    if (i >= u_layerCount) break;
+    if (i == u_layerCount - 1) {
+      R += above * u_multipleAlbedo[i];
+      break;
+    }
+    vec3 below = above * exp(-2.0 * u_sigmaTr[i] * thickness(b, i));
+    R += (above - below) * u_multipleAlbedo[i];
+    above = below;
+  }
+  return R;
 }

@@ -3,6 +3,15 @@
 // through the layer stack, scaled by u_radianceScale, into the linear HDR radiance target (the
 // pipeline's tone map comes last). Vertex stage: common/surface.vert (attribute 4 = the fitted
 // plane (N_S, d mm), interpolated across the triangle as eq. 9 needs).
+// With a boundary (u_ior > 1) the pixel is composed as François et al. 2006 §3 add a specular
+// (glossy) and a diffuse reflection to the single scattering, and as Norberg 2010 §2.2.2 light
+// "scatters directly towards the viewer" (a specular term) or "into the material":
+//   L = F_s(V.H) lobe (N.L) E                                  outer surface, Fresnel-weighted
+//     + T(N.V) [ pi u_radianceScale' L_ss(T(N.L) per light)    single scattering (eq. 1-5)
+//              + sum_l R_ms T(N.L)/T0 (N.L) E_l/pi / T0 ]      multiple scattering
+// with T(mu) = 1 - F(mu) the Schlick transmittance and T0 = T(1): the dipole's R_ms is per
+// incident light at normal incidence, which the two T/T0 ratios carry to other angles; at
+// normal light and view the sum is exactly R_ms + pi L_ss / E (optics::semiInfiniteReflectance).
 // Variants: TISSUE_ADAPTIVE (per-pixel sample count from view angle, layer depth and screen
 // footprint, as subsurface::adaptiveSampleCount); TISSUE_SHOW_SAMPLES (radiance = samples / 100).
 
@@ -21,6 +30,14 @@ uniform float u_texelMm;          // mm per texel of the subsurface map
 uniform float u_pixelAngle;       // radians per pixel, 2 tan(fov / 2) / height
 uniform float u_cutoff;           // round-trip transmittance where the adaptive march stops
 uniform float u_sigmaMin;         // smallest extinction of any layer and channel, mm^-1
+uniform float u_ior;              // relative index of the tissue; 1: no boundary
+uniform bool u_specularOn;        // the outer surface's Fresnel-weighted lobe
+
+// Schlick's Fresnel reflectance for cosine mu with normal-incidence reflectance F0.
+float schlickFresnel(float mu, float F0) {
+  float m = 1.0 - clamp(mu, 0.0, 1.0);
+  return F0 + (1.0 - F0) * m * m * m * m * m;
+}
 
 // Adaptive quality, as subsurface::adaptiveMarch: march only as deep as light returns from
 // (round-trip transmittance above u_cutoff), as finely as depth and footprint need.
@@ -51,11 +68,39 @@ void main() {
   uvec2 px = uvec2(gl_FragCoord.xy);
   px.y = uint(u_viewportHeight - 1) - px.y;
   float jitter = u_jitter ? pixelJitter(px.x, px.y, u_seed) : 0.5;
-  vec4 result = marchSingleScattering(f, max(n, 1), jitter);
+  bool boundary = u_ior > 1.0;
+  float F0 = boundary ? ((u_ior - 1.0) / (u_ior + 1.0)) * ((u_ior - 1.0) / (u_ior + 1.0)) : 0.0;
+  vec3 N = f.Np;
+  float NdotV = max(dot(N, f.wo), 0.0);
+  float T0 = 1.0 - F0;
+  float Tv = boundary ? 1.0 - schlickFresnel(NdotV, F0) : 1.0;
+  float weight[MAX_LIGHTS];
+  vec3 irradianceIn = vec3(0.0), specular = vec3(0.0);
+  for (int l = 0; l < MAX_LIGHTS; ++l) {
+    weight[l] = 1.0;
+    if (l >= u_lightCount || !boundary) continue;
+    vec3 L = lightDirection(l, f.P);
+    float NdotL = max(dot(N, L), 0.0);
+    weight[l] = 1.0 - schlickFresnel(NdotL, F0);
+    irradianceIn += weight[l] / T0 * NdotL * u_lightRadiance[l];
+    if (u_specularOn && NdotL > 0.0) {
+      // Blinn-Phong's normalised lobe (common/blinn_phong.glsl) weighted by Fresnel at V.H.
+      vec3 H = normalize(L + f.wo);
+      float lobe = (u_shininess + 8.0) / (8.0 * kPi) * pow(max(dot(N, H), 0.0), u_shininess);
+      specular += schlickFresnel(dot(H, f.wo), F0) * lobe * NdotL * kPi * u_lightRadiance[l];
+    }
+  }
+  vec4 result = marchSingleScattering(f, max(n, 1), jitter, weight);
 #ifdef TISSUE_SHOW_SAMPLES
   o_radiance = vec4(vec3(result.a / 100.0), 1.0);
 #else
-  o_radiance = vec4(result.rgb * u_radianceScale, 1.0);
+  vec3 radiance = result.rgb * u_radianceScale;
+  if (boundary) {
+    float b[8];
+    sampleBoundaries(f.uv, b);
+    radiance = specular + Tv * (radiance + multipleScatteringAlbedo(b) * irradianceIn / T0);
+  }
+  o_radiance = vec4(radiance, 1.0);
 #endif
   o_diffuse = vec4(0.0, 0.0, 0.0, u_objectId);
   o_position = surfacePosition();

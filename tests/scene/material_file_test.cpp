@@ -1,9 +1,11 @@
 // The one reader of material files and what every method derives from it.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "tissue/scene/material_file.h"
+#include "tissue/scene/truth_material.h"
 
 namespace tissue::scene {
 namespace {
@@ -23,7 +25,8 @@ TEST(MaterialFile, TheDataLiverHasItsFiveLayersAndEveryTexture) {
   EXPECT_EQ(m->name, "liver");
   ASSERT_EQ(m->layers.size(), 5u);  // 4 boundaries of one RGBA map bound 4 + 1 layers (François §2.1)
   EXPECT_FLOAT_EQ(m->depthScaleMm, 3.0f);
-  EXPECT_FLOAT_EQ(m->ior, 1.3f);
+  EXPECT_FLOAT_EQ(m->ior, 1.38f);  // Jacques 2013 eq. 3 with W = 0.7
+  EXPECT_TRUE(m->baseColorDetail);
   for (const auto* t : {&m->textures.subsurface, &m->textures.baseColor, &m->textures.normalMap,
                         &m->textures.opacity, &m->textures.innerBase})
     EXPECT_TRUE(std::filesystem::exists(*t)) << t->string();
@@ -47,16 +50,68 @@ TEST(MaterialFile, TheOpticalMaterialIsTheFirstLayerWithAbsorptionLeftOver) {
   EXPECT_FLOAT_EQ(firstLayerMinSigmaT(*m), std::min({l.sigmaT.x, l.sigmaT.y, l.sigmaT.z}));
 }
 
-TEST(MaterialFile, TheLayerStackOfTheDataLiverValidates) {
+// The truth's material (truth_material.h) from the same file and map: the truth renders the same organ.
+void expectSameTruth(const MaterialFile* m, const Image8& map) {
+  auto t = truthMaterial(*m, map);
+  ASSERT_TRUE(t.ok()) << t.error().message;
+  ASSERT_EQ(t->layers.size(), m->layers.size());
+  EXPECT_EQ(t->maps.mapCount, 1);
+  EXPECT_FLOAT_EQ(t->depthScaleMm, m->depthScaleMm);
+  for (std::size_t i = 0; i < m->layers.size(); ++i) {
+    const MaterialLayer& l = m->layers[i];
+    EXPECT_NEAR((*t->layers[i].sigmaA)[1], double(l.sigmaT.y) - double(l.sigmaS.y), 1e-9);
+    EXPECT_NEAR((*t->layers[i].sigmaS)[2], double(l.sigmaS.z), 1e-9);
+    EXPECT_NEAR(t->layers[i].g[0], double(l.g), 1e-9);
+    EXPECT_NEAR(t->layers[i].n, double(m->ior), 1e-6);
+  }
+  const double thickness[] = {0.5, 0.5, 0.5, 0.5};
+  auto slab = truthMaterial(*m, thickness);
+  ASSERT_TRUE(slab.ok()) << slab.error().message;
+  EXPECT_DOUBLE_EQ(slab->layers[3].thicknessMm, 0.5);
+  EXPECT_TRUE(std::isinf(slab->layers[4].thicknessMm));
+  const double tooFew[] = {0.5};
+  auto bad = truthMaterial(*m, tooFew);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().message.find("liver.json"), std::string::npos);
+}
+
+TEST(MaterialFile, TheLayerStackAndTheTruthOfTheDataLiverValidate) {
   auto m = readMaterialFile(kData / "materials" / "liver.json");
   ASSERT_TRUE(m.ok()) << m.error().message;
   auto map = readImage(m->textures.subsurface, 4);
   ASSERT_TRUE(map.ok()) << map.error().message;
   auto stack = layerStack(*m, *map);
   ASSERT_TRUE(stack.ok()) << stack.error().message;
+  expectSameTruth(&*m, *map);
   EXPECT_EQ(stack->boundaryCount(), 4);
   EXPECT_EQ(stack->layers.size(), 5u);
   EXPECT_FLOAT_EQ(stack->depthScaleMm, 3.0f);
+}
+
+TEST(MaterialFile, TheColourComesFromTheOptics) {
+  auto m = readMaterialFile(kData / "materials" / "liver.json");
+  ASSERT_TRUE(m.ok()) << m.error().message;
+  // Liver is red: blood absorbs green and blue (Bosschaart 2014), so the albedo is red-dominant.
+  const Float3 a = opticalAlbedo(*m);
+  EXPECT_GT(a.x, 5.0f * a.y);
+  EXPECT_GT(a.x, 5.0f * a.z);
+  EXPECT_LT(a.x, 1.0f);
+  // Blood (layer 2) reflects less red than the parenchyma: vessels show darker.
+  EXPECT_LT(layerReflectance(*m, 2).total.x, a.x);
+  // The artist's term: on, the painted luminance varies the texels; off, one flat albedo.
+  Image8 painted(2, 1, 4);
+  painted.at(0, 0)[0] = painted.at(0, 0)[1] = painted.at(0, 0)[2] = 60;
+  painted.at(1, 0)[0] = painted.at(1, 0)[1] = painted.at(1, 0)[2] = 200;
+  const Image8 detail = opticalBaseColor(*m, &painted);
+  ASSERT_EQ(detail.width, 2);
+  EXPECT_LT(detail.at(0, 0)[0], detail.at(1, 0)[0]);
+  m->baseColorDetail = false;
+  const Image8 flat = opticalBaseColor(*m, &painted);
+  EXPECT_EQ(flat.at(0, 0)[0], flat.at(1, 1)[0]);
+  EXPECT_EQ(flat.at(0, 0)[1], flat.at(3, 3)[1]);
+  // sRGB of the linear albedo, red channel.
+  const float r = a.x <= 0.0031308f ? 12.92f * a.x : 1.055f * std::pow(a.x, 1.0f / 2.4f) - 0.055f;
+  EXPECT_NEAR(flat.at(0, 0)[0], 255.0f * r, 1.0f);
 }
 
 TEST(MaterialFile, ErrorsNameTheFileAndTheKey) {

@@ -2,9 +2,12 @@
 #include "tissue/scene/material_file.h"
 
 #include <algorithm>
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "tissue/core/atomic_file.h"
+#include "tissue/optics/dipole.h"
+#include "tissue/optics/reflectance.h"
 
 namespace tissue::scene {
 namespace {
@@ -90,6 +93,12 @@ Result<MaterialFile> readMaterialFile(const std::filesystem::path& file, const M
     if (layer->name.empty()) layer->name = "layer" + std::to_string(i + 1);
     m.layers.push_back(std::move(*layer));
   }
+  if (const auto detail = doc.find("base_color_detail"); detail != doc.end()) {
+    if (!detail->is_boolean())
+      return Error{where +
+                   ": 'base_color_detail' must be true or false (the painted detail on the optical albedo)"};
+    m.baseColorDetail = detail->get<bool>();
+  }
   std::vector<std::filesystem::path> roots = options.textureRoots;
   if (roots.empty()) roots.push_back(file.parent_path().parent_path());
   const json textures = doc.value("textures", json::object());
@@ -130,6 +139,127 @@ optics::ScatteringMaterial opticalMaterial(const MaterialFile& material) {
   }
   m.source = l.source.empty() ? material.file.filename().string() : l.source;
   return m;
+}
+
+LayerReflectance layerReflectance(const MaterialFile& material, std::size_t layer) {
+  const MaterialLayer& l = material.layers.at(layer);
+  const float s[3] = {l.sigmaS.x, l.sigmaS.y, l.sigmaS.z}, t[3] = {l.sigmaT.x, l.sigmaT.y, l.sigmaT.z};
+  float single[3], multiple[3], tr[3];
+  for (int c = 0; c < 3; ++c) {
+    const double sigmaA = std::max(double(t[c]) - double(s[c]), 0.0);
+    const auto r = optics::semiInfiniteReflectance(sigmaA, s[c], l.g, material.ior);
+    single[c] = float(r.single);
+    multiple[c] = float(r.multiple);
+    tr[c] = float(optics::makeDipole(sigmaA, double(s[c]) * (1.0 - double(l.g)), material.ior).sigmaTr);
+  }
+  LayerReflectance out;
+  out.single = {single[0], single[1], single[2]};
+  out.multiple = {multiple[0], multiple[1], multiple[2]};
+  out.total = {single[0] + multiple[0], single[1] + multiple[1], single[2] + multiple[2]};
+  out.sigmaTr = {tr[0], tr[1], tr[2]};
+  return out;
+}
+
+Float3 opticalAlbedo(const MaterialFile& material) {
+  return layerReflectance(material, 0).total;
+}
+
+namespace {
+
+float linearToSrgb(float v) {
+  v = std::clamp(v, 0.0f, 1.0f);
+  return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+}
+float srgbToLinear(float v) {
+  return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+}
+
+// Rec. 709 luminance of texel i of an sRGB image (linear).
+float luminance(const Image8& image, std::size_t i) {
+  const std::uint8_t* p = &image.pixels[i * std::size_t(image.channels)];
+  if (image.channels < 3) return srgbToLinear(float(p[0]) / 255.0f);
+  return 0.2126f * srgbToLinear(float(p[0]) / 255.0f) + 0.7152f * srgbToLinear(float(p[1]) / 255.0f) +
+         0.0722f * srgbToLinear(float(p[2]) / 255.0f);
+}
+
+// The painted image's luminance over its mean, per texel (empty: no detail).
+std::vector<float> detailOf(const Image8* painted) {
+  std::vector<float> d;
+  if (!painted || painted->width <= 0 || painted->height <= 0) return d;
+  const std::size_t n = std::size_t(painted->width) * std::size_t(painted->height);
+  d.resize(n);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    d[i] = luminance(*painted, i);
+    sum += double(d[i]);
+  }
+  const float mean = float(sum / double(n));
+  for (float& v : d)
+    v = mean > 0.0f ? v / mean : 1.0f;
+  return d;
+}
+
+void putTexel(Image8& image, std::size_t i, Float3 linear) {
+  std::uint8_t* p = &image.pixels[i * 4];
+  p[0] = std::uint8_t(std::lround(255.0f * linearToSrgb(linear.x)));
+  p[1] = std::uint8_t(std::lround(255.0f * linearToSrgb(linear.y)));
+  p[2] = std::uint8_t(std::lround(255.0f * linearToSrgb(linear.z)));
+  p[3] = 255;
+}
+
+Float3 scaled(Float3 v, float s) {
+  return {v.x * s, v.y * s, v.z * s};
+}
+
+}  // namespace
+
+Image8 opticalBaseColor(const MaterialFile& material, const Image8* painted) {
+  const Float3 albedo = opticalAlbedo(material);
+  const std::vector<float> detail = material.baseColorDetail ? detailOf(painted) : std::vector<float>{};
+  Image8 out;
+  out.width = detail.empty() ? 4 : painted->width;
+  out.height = detail.empty() ? 4 : painted->height;
+  out.channels = 4;
+  out.pixels.assign(std::size_t(out.width) * std::size_t(out.height) * 4, 0);
+  for (std::size_t i = 0; i < std::size_t(out.width) * std::size_t(out.height); ++i)
+    putTexel(out, i, detail.empty() ? albedo : scaled(albedo, detail[i]));
+  return out;
+}
+
+Image8 opticalLayerImage(const MaterialFile& material, const Image8& subsurfaceMap, float depthMm,
+                         const Image8* painted) {
+  std::vector<Float3> albedo;
+  for (std::size_t l = 0; l < material.layers.size(); ++l)
+    albedo.push_back(layerReflectance(material, l).total);
+  const bool sameSize =
+      painted && painted->width == subsurfaceMap.width && painted->height == subsurfaceMap.height;
+  const std::vector<float> detail =
+      material.baseColorDetail && sameSize ? detailOf(painted) : std::vector<float>{};
+  Image8 out;
+  out.width = subsurfaceMap.width;
+  out.height = subsurfaceMap.height;
+  out.channels = 4;
+  out.pixels.assign(std::size_t(out.width) * std::size_t(out.height) * 4, 0);
+  const int channels = std::min(subsurfaceMap.channels, 4);
+  for (std::size_t i = 0; i < std::size_t(out.width) * std::size_t(out.height); ++i) {
+    // Layer i ends at boundary i (François §2.1): the layer at depthMm is the count of
+    // boundaries above it.
+    std::size_t layer = 0;
+    for (int b = 0; b < channels; ++b) {
+      const float boundaryMm =
+          material.depthScaleMm *
+          float(subsurfaceMap.pixels[i * std::size_t(subsurfaceMap.channels) + std::size_t(b)]) / 255.0f;
+      if (boundaryMm <= depthMm) layer = std::size_t(b) + 1;
+    }
+    layer = std::min(layer, albedo.size() - 1);
+    putTexel(out, i, detail.empty() ? albedo[layer] : scaled(albedo[layer], detail[i]));
+  }
+  return out;
+}
+
+float specularF0(const MaterialFile& material) {
+  const float r = (material.ior - 1.0f) / (material.ior + 1.0f);
+  return r * r;
 }
 
 float firstLayerMinSigmaT(const MaterialFile& material) {

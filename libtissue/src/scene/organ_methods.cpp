@@ -16,11 +16,20 @@ std::string materialName(const OrganAssets& organ) {
 
 Result<OrganTextures> uploadOrganTextures(render::Renderer& renderer, const OrganAssets& organ) {
   OrganTextures t;
+  // The colour comes from the optics (material_file.h): the base colour is the first layer's
+  // albedo (the painted texture at most a luminance detail, MaterialFile::baseColorDetail),
+  // the parallax inner layer the albedo of the layer at the parallax depth under each texel.
+  const std::optional<Image8> base =
+      opticalBaseColor(organ.material, organ.baseColor ? &*organ.baseColor : nullptr);
+  std::optional<Image8> inner = organ.innerBase;
+  if (organ.innerBase && organ.subsurfaceMap)
+    inner = opticalLayerImage(organ.material, *organ.subsurfaceMap, MethodChoices{}.parallaxDepthMm,
+                              &*organ.innerBase);
   const std::pair<const std::optional<Image8>*, render::TextureHandle*> colour[] = {
-      {&organ.baseColor, &t.baseColor},
+      {&base, &t.baseColor},
       {&organ.normalMap, &t.normalMap},
       {&organ.opacity, &t.opacity},
-      {&organ.innerBase, &t.innerBase}};
+      {&inner, &t.innerBase}};
   for (const auto& [image, handle] : colour) {
     if (!*image) continue;
     auto uploaded = renderer.createTexture(**image);
@@ -85,12 +94,22 @@ Result<render::MethodSettings> organMethod(render::ShadingMethod method, const O
                      " must name textures.subsurface (docs/DATA.md)"};
       auto stack = layerStack(organ.material, *organ.subsurfaceMap);
       if (!stack) return stack.error();
-      // François et al. 2006 Algorithm 2 through the whole stack; Schlick's k from each layer's g.
+      // François et al. 2006 Algorithm 2 through the whole stack; Schlick's k from each layer's g;
+      // each layer's multiple-scattered albedo and transport coefficient from the optics
+      // (optics::semiInfiniteReflectance); the outer surface's Fresnel and specular (§3).
       render::RayMarchSettings march;
       march.samples = choices.samples;
       march.adaptive = choices.adaptive;
-      for (const auto& l : stack->layers)
-        march.layers.push_back({l.sigma_s, l.sigma_t, float(optics::schlickKFromG(l.g))});
+      for (std::size_t i = 0; i < stack->layers.size(); ++i) {
+        const auto& l = stack->layers[i];
+        const LayerReflectance r = layerReflectance(organ.material, i);
+        march.layers.push_back(
+            {l.sigma_s, l.sigma_t, float(optics::schlickKFromG(l.g)), r.multiple, r.sigmaTr});
+      }
+      march.ior = organ.material.ior;
+      march.specular = true;
+      // The lights' radiance is E / pi (the lit method's convention): pi gives the march E.
+      march.radianceScale = 3.14159265f;
       march.subsurfaceMaps = {textures.subsurfaceMap};
       march.depthScaleMm = stack->depthScaleMm;
       march.uvPerMm = organ.uvPerMm;
@@ -100,7 +119,8 @@ Result<render::MethodSettings> organMethod(render::ShadingMethod method, const O
       if (!textures.innerBase)
         return Error{"layered parallax needs an inner layer: " + materialName(organ) +
                      " must name textures.inner_base (docs/DATA.md)"};
-      // Norberg 2010 §2.2: one inner layer (the vessels) under the outer layer's opacity.
+      // Norberg 2010 §2.2: one inner layer (the vessels) under the outer layer's opacity; both
+      // layers' colours are the optics' (uploadOrganTextures).
       render::ParallaxSettings parallax;
       parallax.layers = {render::ParallaxLayer{textures.innerBase, choices.parallaxDepthMm, 1.0f}};
       parallax.opacityMap = textures.opacity;

@@ -101,6 +101,12 @@ struct RayMarchLayer {
   Float3 sigma_s{1.0f, 1.0f, 2.0f};  ///< scattering coefficient per RGB channel, mm^-1
   Float3 sigma_t{1.5f, 1.5f, 2.5f};  ///< extinction coefficient per RGB channel, mm^-1 (>= sigma_s)
   float schlickK = 0.0f;             ///< Schlick phase parameter, unitless (-1, 1) (optics::schlickKFromG(g))
+  /// Multiple-scattered reflectance of the layer as a half-space per RGB channel, unitless 0..1
+  /// (optics::semiInfiniteReflectance(...).multiple); zero everywhere: no multiple scattering.
+  Float3 multipleAlbedo{0.0f, 0.0f, 0.0f};
+  /// Effective transport coefficient sqrt(3 sigma_a sigma_t') per RGB channel, mm^-1: how deep
+  /// the diffuse light reaches, which weights the layers' multipleAlbedo per pixel.
+  Float3 sigmaTr{0.0f, 0.0f, 0.0f};
 };
 
 /// Ray-marched subsurface texture mapping (François et al. 2006, Algorithms 1-2; Norberg 2010
@@ -135,8 +141,20 @@ struct RayMarchSettings {
   float cutoff = 0.03f;             ///< adaptive: round-trip transmittance where the march stops, 0..1
   float texelsPerStep = 1.5f;       ///< adaptive: wanted sideways step, texels or pixels
   /// Unitless factor on the single-scattered radiance written to the HDR target (single
-  /// scattering alone is dim: it carries a few percent of the light).
+  /// scattering alone is dim: it carries a few percent of the light). The scene's light
+  /// radiance is E / pi (the lit method's Lambert convention, L = albedo radiance cos), so pi
+  /// makes the march see the irradiance E: the physically composed material
+  /// (scene::organMethod) uses pi.
   float radianceScale = 8.0f;
+  // The surface (François et al. 2006 §3: specular and diffuse reflection added to the single
+  // scattering; Norberg 2010 §2.2.2). All off by default: the march alone, as the CPU model.
+  /// Relative index of refraction of the tissue, >= 1. Above 1 the light entering and leaving
+  /// is weighted by the Fresnel transmittance (1 - F), Schlick's approximation with
+  /// F0 = ((n - 1) / (n + 1))^2, and the Fresnel-weighted Blinn-Phong specular of the outer
+  /// surface (the object's Material::shininess) is added. 1: no boundary.
+  float ior = 1.0f;
+  /// The outer surface's specular lobe on or off (only with ior > 1).
+  bool specular = false;
   /// Debug view: write samples marched / 100 as grey radiance (alpha 1) instead of the radiance.
   bool showSamples = false;
 };

@@ -46,6 +46,19 @@ struct MaterialFile {
   float ior = 1.3f;                   ///< relative index of refraction of the tissue
   std::vector<MaterialLayer> layers;  ///< top first; at least one
   MaterialTextures textures;
+  /// The artist's term (docs/DECISIONS.md, "One material, colour from the optics"): true, the
+  /// painted base_color texture modulates the optical albedo by its luminance relative to its
+  /// mean (detail only, the colour stays the optics'); false, the flat optical albedo. Key
+  /// "base_color_detail" of the file; hosts (the atlas) may switch it off to measure its effect.
+  bool baseColorDetail = true;
+};
+
+/// A layer's reflectance as the methods use it (optics::semiInfiniteReflectance per RGB channel).
+struct LayerReflectance {
+  Float3 single;    ///< single-scattered reflectance, unitless
+  Float3 multiple;  ///< multiple-scattered reflectance (dipole), unitless
+  Float3 total;     ///< their sum: the layer's diffuse albedo
+  Float3 sigmaTr;   ///< effective transport coefficient sqrt(3 sigma_a sigma_t'), mm^-1
 };
 
 /// Where a material's relative texture paths are looked up.
@@ -68,6 +81,28 @@ MaterialFile defaultMaterial();
 /// The first layer as an optical material (sigma_a = sigma_t - sigma_s, eta = ior): the
 /// separable kernels' and texture-space Gaussians' input (their dipole profile).
 optics::ScatteringMaterial opticalMaterial(const MaterialFile& material);
+
+/// `layer` of `material` (index in layers) as a half-space below air with the file's ior.
+LayerReflectance layerReflectance(const MaterialFile& material, std::size_t layer);
+
+/// The diffuse albedo of the organ, linear RGB 0..1: the first layer's total reflectance. The
+/// colour of every method (lit, separable, texture space, parallax's outer layer) comes from it.
+Float3 opticalAlbedo(const MaterialFile& material);
+
+/// The base colour texture every method shades with (sRGB RGBA8): the optical albedo, times the
+/// painted texture's luminance over its mean luminance when baseColorDetail is on and `painted`
+/// is given (clamped to 1); a 4x4 flat image otherwise.
+Image8 opticalBaseColor(const MaterialFile& material, const Image8* painted);
+
+/// The image of the layer found at `depthMm` below each texel of `subsurfaceMap` (François et
+/// al. 2006 §2.1 boundaries), each texel that layer's total albedo (sRGB RGBA8): the inner layer of
+/// layered parallax from the optics. With baseColorDetail and `painted` (same size) its luminance
+/// modulates it as in opticalBaseColor.
+Image8 opticalLayerImage(const MaterialFile& material, const Image8& subsurfaceMap, float depthMm,
+                         const Image8* painted);
+
+/// Normal-incidence Fresnel reflectance of the outer surface, ((n - 1) / (n + 1))^2 for n = ior.
+float specularF0(const MaterialFile& material);
 
 /// The smallest RGB extinction of the first layer (mm^-1): sigma_t of the local planes' sphere
 /// radius (François eq. 8).

@@ -47,6 +47,16 @@ Result<ResolvedMaps> checkObject(const ObjectDraw& d, const RayMarchSettings& s)
       return Error{where + ", layer " + std::to_string(i) +
                    ": needs sigma_t > 0 and sigma_s >= 0 (mm^-1) and |schlickK| < 1"};
     }
+    const auto unit = [](float v) { return v >= 0.0f && v <= 1.0f; };
+    const Float3 a = l.multipleAlbedo, t = l.sigmaTr;
+    if (!unit(a.x) || !unit(a.y) || !unit(a.z) || !(t.x >= 0.0f && t.y >= 0.0f && t.z >= 0.0f) ||
+        !std::isfinite(t.x + t.y + t.z)) {
+      return Error{where + ", layer " + std::to_string(i) +
+                   ": needs multipleAlbedo in [0, 1] and a finite sigmaTr >= 0 (mm^-1)"};
+    }
+  }
+  if (!(s.ior >= 1.0f) || !std::isfinite(s.ior)) {
+    return Error{where + ": ior (the tissue's relative index of refraction) must be finite and >= 1"};
   }
   if (!(s.depthScaleMm > 0.0f) || !(s.uvPerMm > 0.0f) || !(s.depthMaxMm > 0.0f)) {
     return Error{where + ": depthScaleMm, uvPerMm and depthMaxMm must be positive"};
@@ -85,6 +95,8 @@ void setObjectUniforms(const FrameContext& frame, GLuint program, const RayMarch
     u.set("u_sigmaS[" + index + "]", l.sigma_s);
     u.set("u_sigmaT[" + index + "]", l.sigma_t);
     u.set("u_schlickK[" + index + "]", l.schlickK);
+    u.set("u_multipleAlbedo[" + index + "]", l.multipleAlbedo);
+    u.set("u_sigmaTr[" + index + "]", l.sigmaTr);
     sigmaMin = std::min({sigmaMin, l.sigma_t.x, l.sigma_t.y, l.sigma_t.z});
   }
   u.set("u_depthScale", s.depthScaleMm);
@@ -100,6 +112,9 @@ void setObjectUniforms(const FrameContext& frame, GLuint program, const RayMarch
   frame.gl.Uniform1ui(u.at("u_seed"), s.seed);
   u.set("u_viewportHeight", frame.height);
   u.set("u_radianceScale", s.radianceScale);
+  // The surface (raymarch.frag: François et al. 2006 §3, Norberg 2010 §2.2.2).
+  u.set("u_ior", s.ior);
+  u.set("u_specularOn", s.specular ? 1 : 0);
   // Adaptive quality.
   u.set("u_minSamples", std::clamp(s.minSamples, 1, 256));
   u.set("u_maxSamples", std::clamp(s.maxSamples, 1, 256));

@@ -1,0 +1,173 @@
+// The ray-marched method composed as a material (shaders/raymarch/raymarch.frag: François et
+// al. 2006 §3, Norberg 2010 §2.2.2): on a flat homogeneous semi-infinite patch under normal light,
+// the rendered radiance equals the optics' reflectance (optics::semiInfiniteReflectance: the
+// dipole's multiple scattering plus the march's single scattering), energy stays below the
+// light that enters for white light, and the Fresnel-weighted specular adds on top.
+#include <algorithm>
+#include <cstdio>
+
+#include "gl_test_support.h"
+#include "test_scene.h"
+#include "tissue/optics/reflectance.h"
+#include "tissue/optics/schlick_phase.h"
+#include "tissue/render/renderer.h"
+#include "tissue/scene/material_file.h"
+
+namespace tissue::test {
+namespace {
+
+constexpr int kSize = 48;
+
+// A 400 mm flat patch at z = 0 (planes (0, 0, 1, 0)) under a directional light straight down,
+// seen from straight above: the centre pixels see light and view along the normal.
+struct FlatPatch {
+  render::Renderer renderer;
+  render::MeshHandle mesh;
+  render::TextureHandle map;
+  render::Scene scene;
+};
+
+Result<FlatPatch> makeFlatPatch(context::GlContext& context) {
+  auto r = render::Renderer::create(context.procAddressFunction());
+  if (!r) return r.error();
+  SphereMesh quad = makePatch(400.0f, 2, 0.0f);
+  const std::vector<Float4> planes(quad.positions.size(), Float4{0.0f, 0.0f, 1.0f, 0.0f});
+  render::MeshArrays arrays = quad.arrays();
+  arrays.planes = planes;
+  auto mesh = r->createMesh(arrays);
+  if (!mesh) return mesh.error();
+  Image8 map(4, 4, 4);
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x)
+      for (int c = 0; c < 4; ++c)
+        map.at(x, y)[c] = std::uint8_t(51 * (c + 1));
+  auto texture = r->createTexture(map, render::TextureEncoding::LinearData);
+  if (!texture) return texture.error();
+  FlatPatch p{std::move(*r), *mesh, *texture, {}};
+  p.scene.camera.eye = {0.0f, 0.0f, 300.0f};
+  p.scene.camera.target = {0.0f, 0.0f, 0.0f};
+  p.scene.camera.verticalFovDeg = 10.0f;
+  p.scene.camera.nearMm = 50.0f;
+  p.scene.camera.farMm = 600.0f;
+  render::Light sun;
+  sun.type = render::LightType::Directional;
+  sun.direction = {0.0f, 0.0f, -1.0f};
+  sun.color = {1.0f, 1.0f, 1.0f};
+  sun.intensity = 1.0f;
+  p.scene.lights = {sun};
+  return p;
+}
+
+// The ray-march settings of one homogeneous layer (all five the same) as organ_methods builds
+// them from the material reader.
+render::RayMarchSettings homogeneous(const scene::MaterialFile& m, std::size_t layer,
+                                     render::TextureHandle map) {
+  const scene::LayerReflectance r = scene::layerReflectance(m, layer);
+  const scene::MaterialLayer& l = m.layers[layer];
+  render::RayMarchSettings s;
+  for (int i = 0; i < 5; ++i)
+    s.layers.push_back({l.sigmaS, l.sigmaT, float(optics::schlickKFromG(l.g)), r.multiple, r.sigmaTr});
+  s.subsurfaceMaps = {map};
+  s.depthScaleMm = 2.0f;
+  s.uvPerMm = 1.0f / 400.0f;
+  s.samples = 128;
+  s.depthMaxMm = 4.0f;
+  s.attenuationThreshold = 0.0f;
+  s.jitter = false;
+  s.radianceScale = 3.14159265f;  // the light's radiance is E / pi (as organ_methods)
+  s.ior = m.ior;
+  s.specular = false;
+  return s;
+}
+
+// The centre pixel's linear radiance over the light's radiance (1): the reflectance.
+Float3 centre(render::Renderer& r) {
+  auto frame = r.readFrame(render::FrameView::Radiance);
+  EXPECT_TRUE(frame) << frame.error().message;
+  if (!frame) return {};
+  const Float4 p = frame->pixels[std::size_t(kSize / 2) * kSize + kSize / 2];
+  return {p.x, p.y, p.z};
+}
+
+scene::MaterialFile dataLiver() {
+  auto m = scene::readMaterialFile(std::filesystem::path(TISSUE_TEST_DATA_DIR) / "materials" / "liver.json");
+  EXPECT_TRUE(m) << m.error().message;
+  return m ? *m : scene::defaultMaterial();
+}
+
+class RayMarchMaterialTest : public ::testing::TestWithParam<Backend> {};
+
+TEST_P(RayMarchMaterialTest, AFlatHomogeneousPatchUnderNormalLightReflectsTheOpticsReflectance) {
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
+  auto p = makeFlatPatch(*context);
+  ASSERT_TRUE(p) << p.error().message;
+  const scene::MaterialFile liver = dataLiver();
+  // The parenchyma (layer 0) and whole blood (layer 2) of the data liver, each as a half-space.
+  for (std::size_t layer : {std::size_t(0), std::size_t(2)}) {
+    render::SceneObject o;
+    o.mesh = p->mesh;
+    o.method = homogeneous(liver, layer, p->map);
+    p->scene.objects = {o};
+    ASSERT_TRUE(p->renderer.renderImage(p->scene, kSize, kSize));
+    const Float3 got = centre(p->renderer);
+    const scene::MaterialLayer& l = liver.layers[layer];
+    const float s[3] = {l.sigmaS.x, l.sigmaS.y, l.sigmaS.z}, t[3] = {l.sigmaT.x, l.sigmaT.y, l.sigmaT.z};
+    const float g[3] = {got.x, got.y, got.z};
+    for (int c = 0; c < 3; ++c) {
+      const double sigmaA = double(t[c]) - double(s[c]);
+      const optics::Reflectance r = optics::semiInfiniteReflectance(sigmaA, s[c], l.g, liver.ior);
+      // At normal light and view: the multiple part and pi times the single radiance factor.
+      const double expected = r.multiple + 3.14159265358979 * optics::singleScatteringNormalRadiance(
+                                                                  sigmaA, s[c], l.g, liver.ior);
+      std::printf("[ reflectance ] layer %zu band %d: rendered %.5f, optics %.5f (total %.5f)\n", layer, c,
+                  double(g[c]), expected, r.total());
+      // 2 %: the RGBA16F target (2^-11), the 128-sample march, the pixel's ~0.1 degree off-normal view.
+      EXPECT_NEAR(double(g[c]), expected, 0.02 * expected) << "layer " << layer << " band " << c;
+    }
+  }
+}
+
+TEST_P(RayMarchMaterialTest, SingleAndMultipleStayBelowOneForWhiteLightAndTheSpecularAddsOnTop) {
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
+  auto p = makeFlatPatch(*context);
+  ASSERT_TRUE(p) << p.error().message;
+  // A nearly non-absorbing material reflects the most; an oblique light as well as a normal one.
+  scene::MaterialFile white = scene::defaultMaterial();
+  white.ior = 1.38f;
+  white.layers[0].sigmaS = {10.0f, 10.0f, 10.0f};
+  white.layers[0].sigmaT = {10.001f, 10.01f, 10.1f};
+  white.layers[0].g = 0.9f;
+  for (Float3 light : {Float3{0.0f, 0.0f, -1.0f}, Float3{0.6f, 0.0f, -0.8f}}) {
+    p->scene.lights[0].direction = light;
+    render::SceneObject o;
+    o.mesh = p->mesh;
+    o.method = homogeneous(white, 0, p->map);
+    p->scene.objects = {o};
+    ASSERT_TRUE(p->renderer.renderImage(p->scene, kSize, kSize));
+    auto frame = p->renderer.readFrame(render::FrameView::Radiance);
+    ASSERT_TRUE(frame);
+    float most = 0.0f;
+    for (const Float4& px : frame->pixels)
+      most = std::max({most, px.x, px.y, px.z});
+    std::printf("[ energy ] light (%.1f, %.1f, %.1f): largest reflectance %.4f\n", double(light.x),
+                double(light.y), double(light.z), double(most));
+    EXPECT_LT(most, 1.0f) << "single + multiple above the light";
+    EXPECT_GT(most, 0.5f) << "a white material reflects most of the light";
+    // The specular: at normal light and view the lobe peaks at F0 (n + 8) / 8.
+    if (light.x == 0.0f) {
+      const Float3 diffuse = centre(p->renderer);
+      auto& s = std::get<render::RayMarchSettings>(p->scene.objects[0].method);
+      s.specular = true;
+      ASSERT_TRUE(p->renderer.renderImage(p->scene, kSize, kSize));
+      const Float3 both = centre(p->renderer);
+      const float f0 = scene::specularF0(white), n = render::Material{}.shininess;
+      EXPECT_NEAR(both.y - diffuse.y, f0 * (n + 8.0f) / 8.0f, 0.03f * f0 * (n + 8.0f) / 8.0f);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, RayMarchMaterialTest, ::testing::Values(Backend::Egl, Backend::OsMesa),
+                         backendParamName);
+
+}  // namespace
+}  // namespace tissue::test
