@@ -1,7 +1,7 @@
 // Ray rates of the path-traced truth's two ray-mesh back ends (Embree 3 and the subsurface BVH)
 // on the data liver (data/meshes/liver.obj, 27.6k triangles, mm), single-threaded, and the path
 // tracer's sample rate on that liver with each. Prints median, p99 and worst rates over batches:
-//   tissue_truth_bench [--batches N] [--rays N] [--threads N]
+//   tissue_truth_bench [--batches N] [--rays N] [--threads N] [--spp N] [--roulette W] [--tracer-only 1]
 // The random-walk rays start just inside the surface (a random point of a random triangle, 0.01 mm
 // in) with a random inward direction, as the walk's queries do; camera rays come from a pinhole
 // camera framing the liver. "nearest 1.1" is the layer-depth query: the nearest surface point
@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "cpu_time.h"
 #include "tissue/core/statistics.h"
 #include "tissue/core/vec_math.h"
 #include "tissue/mesh/load_mesh.h"
@@ -112,12 +113,17 @@ void printRates(const char* what, const char* backend, const std::vector<double>
 }  // namespace
 
 int main(int argc, char** argv) {
-  int batches = 30, threads = 1;
+  int batches = 30, threads = 1, spp = 16;
+  double roulette = -1.0;  // < 0: the default
+  bool tracerOnly = false;
   std::size_t rayCount = 200000;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--batches")) batches = std::atoi(argv[i + 1]);
     if (!std::strcmp(argv[i], "--rays")) rayCount = std::size_t(std::atol(argv[i + 1]));
     if (!std::strcmp(argv[i], "--threads")) threads = std::atoi(argv[i + 1]);
+    if (!std::strcmp(argv[i], "--spp")) spp = std::max(2, std::atoi(argv[i + 1]));
+    if (!std::strcmp(argv[i], "--roulette")) roulette = std::atof(argv[i + 1]);
+    if (!std::strcmp(argv[i], "--tracer-only")) tracerOnly = std::atoi(argv[i + 1]) != 0;
   }
   const std::string path = std::string(TISSUE_BENCH_DATA_DIR) + "/meshes/liver.obj";
   auto mesh = mesh::loadMesh(path);
@@ -135,6 +141,7 @@ int main(int argc, char** argv) {
   const std::vector<Ray> walk = walkRays(*mesh, rayCount);
   const std::vector<Ray> cam = cameraRays(camera, 400, 300);
   for (truth::Intersector kind : {truth::Intersector::Embree, truth::Intersector::Bvh}) {
+    if (tracerOnly) break;
     const auto start = std::chrono::steady_clock::now();
     auto rays = truth::makeRayMesh(mesh->positions, mesh->triangles, kind);
     if (!rays) {
@@ -172,28 +179,45 @@ int main(int argc, char** argv) {
     truth::PathTraceSettings s;
     s.width = 80;
     s.height = 60;
-    s.samplesPerPass = 2;
+    s.samplesPerPass = spp / 2;
     s.passes = 2;
     s.threads = threads;
     s.intersector = kind;
     s.surfaceRoughness = 0.17;
+    if (roulette >= 0.0) s.rouletteWeight = roulette;
+    const double cpu0 = bench::cpuSeconds();
     auto image = truth::renderPathTraced(truthMesh, material, lights, camera, s);
+    const double cpu = bench::cpuSeconds() - cpu0;
     if (!image) {
       std::printf("%s\n", image.error().message.c_str());
       return 1;
     }
     std::int64_t covered = 0;
-    for (std::uint8_t c : image->covered)
-      covered += c;
+    double relativeNoise = 0.0;  // mean over organ pixels of stderr / mean (luminance)
+    for (std::size_t i = 0; i < image->covered.size(); ++i) {
+      if (!image->covered[i]) continue;
+      const Float3 m = image->radiance[i], e = image->stderrs[i];
+      const double lum = 0.2126 * double(m.x) + 0.7152 * double(m.y) + 0.0722 * double(m.z);
+      const double err = std::sqrt(0.2126 * 0.2126 * double(e.x * e.x) + 0.7152 * 0.7152 * double(e.y * e.y) +
+                                   0.0722 * 0.0722 * double(e.z * e.z));
+      if (lum > 0.0) relativeNoise += err / lum;
+      ++covered;
+    }
+    relativeNoise /= double(std::max<std::int64_t>(covered, 1));
     const double pixelSamples = double(image->width * image->height) * image->samplesPerPixel;
     std::printf(
-        "path tracer  %-7s %dx%d, %d spp, %d thread(s): %.2f s, %.0f pixel samples/s (%.0f on the organ), "
-        "%.0f paths/s, %.1f collisions per path, capped %lld, lost %lld\n",
+        "path tracer  %-7s %dx%d, %d spp, %d thread(s): %.2f s (%.2f CPU s), per CPU s %.0f pixel samples "
+        "(%.0f on the organ), "
+        "%.0f paths/s, %.1f collisions per path, capped %lld, lost %lld; per-pixel noise %.1f%% at %d spp, "
+        "organ pixels to 1%% noise per CPU s %.3f\n",
         truth::intersectorName(kind), image->width, image->height, image->samplesPerPixel, image->threads,
-        image->seconds, pixelSamples / image->seconds,
-        double(covered) * image->samplesPerPixel / image->seconds, double(image->paths) / image->seconds,
-        double(image->interactions) / double(covered * image->samplesPerPixel * truth::kBands),
-        static_cast<long long>(image->cappedPaths), static_cast<long long>(image->lostPaths));
+        image->seconds, cpu, pixelSamples / cpu, double(covered) * image->samplesPerPixel / cpu,
+        double(image->paths) / cpu, double(image->interactions) / double(covered * image->samplesPerPixel),
+        static_cast<long long>(image->cappedPaths), static_cast<long long>(image->lostPaths),
+        100.0 * relativeNoise, image->samplesPerPixel,
+        // Efficiency: organ pixels brought to 1% noise per second, rate / samples needed, with the
+        // samples needed (noise * sqrt(spp) / 0.01)^2.
+        double(covered) / cpu / (1e4 * relativeNoise * relativeNoise));
   }
   return 0;
 }
