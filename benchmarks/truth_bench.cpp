@@ -2,6 +2,7 @@
 // on the data liver (data/meshes/liver.obj, 27.6k triangles, mm), single-threaded, and the path
 // tracer's sample rate on that liver with each. Prints median, p99 and worst rates over batches:
 //   tissue_truth_bench [--batches N] [--rays N] [--threads N] [--spp N] [--roulette W] [--tracer-only 1]
+//                      [--liver-material 1] [--bvh 0] [--spectral 0]
 // The random-walk rays start just inside the surface (a random point of a random triangle, 0.01 mm
 // in) with a random inward direction, as the walk's queries do; camera rays come from a pinhole
 // camera framing the liver. "nearest 1.1" is the layer-depth query: the nearest surface point
@@ -20,6 +21,8 @@
 #include "tissue/core/statistics.h"
 #include "tissue/core/vec_math.h"
 #include "tissue/mesh/load_mesh.h"
+#include "tissue/scene/organ_assets.h"
+#include "tissue/scene/truth_view.h"
 #include "tissue/truth/path_tracer.h"
 
 namespace {
@@ -115,7 +118,7 @@ void printRates(const char* what, const char* backend, const std::vector<double>
 int main(int argc, char** argv) {
   int batches = 30, threads = 1, spp = 16;
   double roulette = -1.0;  // < 0: the default
-  bool tracerOnly = false;
+  bool tracerOnly = false, liverMaterial = false, withBvh = true, spectral = true;
   std::size_t rayCount = 200000;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--batches")) batches = std::atoi(argv[i + 1]);
@@ -124,6 +127,9 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--spp")) spp = std::max(2, std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--roulette")) roulette = std::atof(argv[i + 1]);
     if (!std::strcmp(argv[i], "--tracer-only")) tracerOnly = std::atoi(argv[i + 1]) != 0;
+    if (!std::strcmp(argv[i], "--liver-material")) liverMaterial = std::atoi(argv[i + 1]) != 0;
+    if (!std::strcmp(argv[i], "--bvh")) withBvh = std::atoi(argv[i + 1]) != 0;
+    if (!std::strcmp(argv[i], "--spectral")) spectral = std::atoi(argv[i + 1]) != 0;
   }
   const std::string path = std::string(TISSUE_BENCH_DATA_DIR) + "/meshes/liver.obj";
   auto mesh = mesh::loadMesh(path);
@@ -171,11 +177,36 @@ int main(int argc, char** argv) {
   organ.sigmaS = truth::Rgb{1.0, 1.0, 2.0};
   organ.g = {0.8, 0.8, 0.8};
   material.layers = {capsule, organ};
+  // --liver-material: the data liver's own material file (five layers per texel of its
+  // subsurface map, scene::truthMaterialOf), on its render mesh with UVs.
+  SurfaceMesh liverMesh = *mesh;
+  if (liverMaterial) {
+    scene::OrganSource source;
+    source.mesh = path;
+    source.material = std::string(TISSUE_BENCH_DATA_DIR) + "/materials/liver.json";
+    source.materialOptions.textureRoots = {TISSUE_BENCH_GENERATED_DATA_DIR, TISSUE_BENCH_DATA_DIR};
+    source.uvAtlasFallback = false;
+    auto assets = scene::loadOrganAssets(source);
+    if (!assets) {
+      std::printf("%s\n", assets.error().message.c_str());
+      return 1;
+    }
+    auto m = scene::truthMaterialOf(*assets);
+    if (!m) {
+      std::printf("%s\n", m.error().message.c_str());
+      return 1;
+    }
+    material = *m;
+    liverMesh = assets->mesh;
+    std::printf("liver material: %zu layers, %d subsurface map(s)\n", material.layers.size(),
+                material.maps.mapCount);
+  }
   truth::TruthLight lights[2];
   lights[1].type = truth::TruthLightType::Directional;
-  const truth::TruthMesh truthMesh{mesh->positions, mesh->triangles, {}};
+  const truth::TruthMesh truthMesh{liverMesh.positions, liverMesh.triangles, liverMesh.uvs};
   for (truth::Intersector kind : {truth::Intersector::Embree, truth::Intersector::Bvh}) {
     if (kind == truth::Intersector::Embree && !truth::embreeAvailable()) continue;
+    if (kind == truth::Intersector::Bvh && !withBvh) continue;
     truth::PathTraceSettings s;
     s.width = 80;
     s.height = 60;
@@ -185,6 +216,7 @@ int main(int argc, char** argv) {
     s.intersector = kind;
     s.surfaceRoughness = 0.17;
     if (roulette >= 0.0) s.rouletteWeight = roulette;
+    s.spectral = spectral;
     const double cpu0 = bench::cpuSeconds();
     auto image = truth::renderPathTraced(truthMesh, material, lights, camera, s);
     const double cpu = bench::cpuSeconds() - cpu0;

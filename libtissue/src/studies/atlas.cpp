@@ -187,7 +187,7 @@ Result<AtlasResult> runAtlas(render::Renderer& renderer, const AtlasConfig& conf
     config.width = std::min(config.width, 96);
     config.height = std::min(config.height, 72);
     config.truthSpp = std::min(config.truthSpp, 64);
-    config.truthSeconds = std::min(config.truthSeconds, 8.0);
+    config.truthSeconds = std::min(config.truthSeconds, 5.0);
     config.frames = std::min(config.frames, 2);
   }
   const int w = config.width, h = config.height;

@@ -207,7 +207,16 @@ Result<TruthImage> renderPathTraced(const TruthMesh& mesh, const TruthMaterial& 
           scratch.reset(transport.lightCount());
           for (int s = 0; s < settings.samplesPerPass; ++s) {
             const CameraRay r = cameraRays.sample(x, y, rng, settings.jitter);
-            const Rgb value = transport.trace(r.origin, r.dir, rng, st, scratch);
+            Rgb value{0.0, 0.0, 0.0};
+            if (settings.spectral) {
+              value = transport.trace(r.origin, r.dir, rng, st, scratch);
+            } else {
+              for (std::size_t b = 0; b < std::size_t(kBands); ++b) {
+                Rgb only{0.0, 0.0, 0.0};
+                only[b] = 1.0;
+                value[b] = transport.trace(r.origin, r.dir, rng, st, scratch, only)[b];
+              }
+            }
             for (std::size_t band = 0; band < std::size_t(kBands); ++band) {
               acc.sum[3 * pixel + band] += value[band];
               acc.sumSq[3 * pixel + band] += value[band] * value[band];
@@ -254,7 +263,7 @@ Result<TruthImage> renderPathTraced(const TruthMesh& mesh, const TruthMaterial& 
     image.nextEvents += st.nextEvents;
     image.skippedNextEvents += st.skippedEvents;
   }
-  image.paths = std::int64_t(pixels) * image.samplesPerPixel;
+  image.paths = std::int64_t(pixels) * image.samplesPerPixel * (settings.spectral ? 1 : kBands);
   image.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return image;
 }

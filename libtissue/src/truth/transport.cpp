@@ -100,12 +100,15 @@ Transport::Transport(const RayMesh& rays, const TruthMesh& mesh, const TruthMate
   }
 }
 
-Rgb Transport::trace(V o, V d, RandomStream& rng, PathStats& stats, PathScratch& scratch) const {
+Rgb Transport::trace(V o, V d, RandomStream& rng, PathStats& stats, PathScratch& scratch,
+                     const Rgb& bands) const {
   const bool single = m_settings.estimator == Estimator::SingleScattering;
   // w: the band weights of the boundary and the collisions; ratio: the bands' direction densities
   // over the hero band's (scatter); withDirections(w, ratio) is what a band carries.
-  Rgb radiance{0.0, 0.0, 0.0}, w{1.0, 1.0, 1.0}, ratio{1.0, 1.0, 1.0};
-  const std::size_t hero = std::min<std::size_t>(2, std::size_t(3.0 * rng.uniform()));
+  Rgb radiance{0.0, 0.0, 0.0}, w = bands, ratio{1.0, 1.0, 1.0};
+  std::size_t hero = std::min<std::size_t>(2, std::size_t(3.0 * rng.uniform()));
+  const bool oneBand = bands[0] + bands[1] + bands[2] == 1.0;
+  if (oneBand) hero = bands[1] == 1.0 ? 1 : (bands[2] == 1.0 ? 2 : 0);  // its own lobe, no MIS
   bool inside = false, needRay = true;
   double toBoundary = 0.0;  // mm along d from o to the boundary (inside)
   std::uint32_t boundaryTriangle = 0;
@@ -184,6 +187,7 @@ Rgb Transport::trace(V o, V d, RandomStream& rng, PathStats& stats, PathScratch&
         radiance[b] += nee[b];
       if (single || allZero(w)) break;
       d = scatter(d, layer, hero, ratio, rng);
+      if (oneBand) ratio = {1.0, 1.0, 1.0};
       needRay = true;
       // Russian roulette on the largest band's weight: survive with probability w / threshold.
       const double wMax = maxOf(withDirections(w, ratio));

@@ -53,8 +53,10 @@ class Transport {
             std::span<const TruthLight> lights, const PathTraceSettings& settings);
 
   /// Radiance (light units, per band) arriving along the ray o + t d (d unit) from the scene.
+  /// `bands`: the initial band weights (all ones: the three bands on one path; a unit vector:
+  /// that band alone, whose spectral tracking is then plain delta tracking).
   Rgb trace(glm::dvec3 o, glm::dvec3 d, optics::detail::RandomStream& rng, PathStats& stats,
-            PathScratch& scratch) const;
+            PathScratch& scratch, const Rgb& bands = {1.0, 1.0, 1.0}) const;
 
   std::size_t lightCount() const { return m_lights.size(); }
 

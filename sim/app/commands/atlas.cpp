@@ -20,20 +20,26 @@ struct AtlasOptions {
   studies::AtlasConfig config;
 };
 
-int run(AtlasOptions o, const GlobalOptions& global) {
-  const char* cmd = "atlas";
+// The atlas on its own context and renderer, both gone before the report is written: VTK's
+// charts make a GLX context current, which Mesa refuses (BadAccess) while this thread holds one.
+Result<studies::AtlasResult> runOnOwnContext(studies::AtlasConfig config) {
   auto context = createAppContext({}, false);
-  if (!context) return fail(cmd, context.error().message);
+  if (!context) return context.error();
   auto renderer = render::Renderer::create((*context)->procAddressFunction(),
                                            {.shaders = shaderSettingsFromEnvironment(), .samples = 0});
-  if (!renderer) return fail(cmd, renderer.error().message);
-  o.config.glRenderer = (*context)->info().renderer;
+  if (!renderer) return renderer.error();
+  config.glRenderer = (*context)->info().renderer;
+  return studies::runAtlas(*renderer, config);
+}
+
+int run(AtlasOptions o, const GlobalOptions& global) {
+  const char* cmd = "atlas";
   o.config.scene = dataSceneSettings();
   o.config.organ.scenario = dataDir() / "scenarios" / "liver_poke_grasp.json";
   o.config.cacheDir = !o.cache.empty()        ? std::filesystem::path(o.cache)
                       : !o.places.out.empty() ? std::filesystem::path(o.places.out) / "truth_cache"
                                               : std::filesystem::path{};
-  auto atlas = studies::runAtlas(*renderer, o.config);
+  auto atlas = runOnOwnContext(o.config);
   if (!atlas) return fail(cmd, atlas.error().message);
   return finishStudy(cmd, std::move(atlas->output), o.places, global);
 }

@@ -110,6 +110,10 @@ struct PathTraceSettings {
   /// Transport through the surface always treats it as smooth.
   double surfaceRoughness = 0.0;
   bool jitter = true;  ///< pinhole: sample uniformly within each pixel (else its centre)
+  /// true: one path carries the three bands (spectral tracking); false: a path per band (the
+  /// same transport with one band's weight, i.e. delta tracking of that band against the common
+  /// majorant): slower, but no spread of the weights between bands.
+  bool spectral = true;
   /// Russian roulette where the path's largest band weight w falls below this: it survives with
   /// probability w / rouletteWeight and then carries rouletteWeight.
   double rouletteWeight = 0.1;
