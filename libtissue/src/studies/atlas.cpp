@@ -84,19 +84,6 @@ render::Light keyLight(const Bounds3& b) {
   return l;
 }
 
-// Area-weighted vertex normals of the render mesh (for choosing the views).
-std::vector<Float3> vertexNormals(const SurfaceMesh& m) {
-  std::vector<Float3> n(m.positions.size(), Float3{});
-  for (const Triangle& t : m.triangles) {
-    const Float3 f = cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]);
-    for (std::uint32_t v : t)
-      n[v] = n[v] + f;
-  }
-  for (Float3& v : n)
-    v = length(v) > 0.0f ? normalize(v) : Float3{0, 0, 1};
-  return n;
-}
-
 // The frames of the atlas for the organ's rest shape (`rays` over it).
 Result<std::vector<Frame>> makeFrames(const scene::OrganAssets& organ, const truth::RayMesh& rays,
                                       float aspect) {
@@ -121,28 +108,43 @@ Result<std::vector<Frame>> makeFrames(const scene::OrganAssets& organ, const tru
                     render::frameBoundingBox(b.lo, b.hi, aspect, {-1.0f, -0.1f, -0.18f}),
                     {keyLight(b)},
                     false});
-  // A thin part lit from behind: the vertex facing the camera whose inward ray leaves the organ
-  // soonest (but after 0.5 mm), seen from 60 mm along its normal, a directional light coming
-  // through from the far side along the normal.
-  const std::vector<Float3> normals = vertexNormals(organ.mesh);
-  double thinnest = 1e30;
-  std::size_t best = 0;
-  for (std::size_t v = 0; v < organ.mesh.positions.size(); v += 5) {
-    const Float3 n = normals[v];
-    if (dot(n, forward) > -0.5f) continue;
-    const Float3 p = organ.mesh.positions[v] - 0.01f * n;
-    const auto h = rays.intersect({p.x, p.y, p.z}, {-n.x, -n.y, -n.z}, 0.0, 1e30);
-    if (h && h->t > 0.5 && h->t < thinnest) thinnest = h->t, best = v;
-  }
-  if (thinnest > 1e29) return Error{"atlas: found no thin part of the organ facing the camera"};
+  // A thin part lit from behind: of the framed view's rays on a 48 x 36 grid that meet the organ
+  // facing it (cosine > 0.5), the one whose way through the organ is shortest (but >= 1 mm),
+  // seen from a third of the distance, with a directional light from the far side travelling
+  // towards the camera (the renderer's shadowed lamp sees only the back).
+  const Float3 right = normalize(cross(forward, framed.up));
+  const Float3 up = cross(right, forward);
+  const float tanHalf = std::tan(framed.verticalFovDeg * 3.14159265f / 360.0f);
+  double thinnest = 1e30, thinDistance = 0.0;
+  Float3 thinPoint{}, thinDir{};
+  for (int j = 0; j < 36; ++j)
+    for (int i = 0; i < 48; ++i) {
+      const float sx = (2.0f * (float(i) + 0.5f) / 48.0f - 1.0f) * tanHalf * aspect;
+      const float sy = (1.0f - 2.0f * (float(j) + 0.5f) / 36.0f) * tanHalf;
+      const Float3 d = normalize(forward + sx * right + sy * up);
+      const auto entry =
+          rays.intersect({framed.eye.x, framed.eye.y, framed.eye.z}, {d.x, d.y, d.z}, 0.0, 1e30);
+      if (!entry) continue;
+      const Triangle& t = organ.mesh.triangles[entry->triangle];
+      const Float3 n = normalize(cross(organ.mesh.positions[t[1]] - organ.mesh.positions[t[0]],
+                                       organ.mesh.positions[t[2]] - organ.mesh.positions[t[0]]));
+      if (dot(n, d) > -0.5f) continue;
+      const Float3 p = framed.eye + float(entry->t + 0.01) * d;
+      const auto exit = rays.intersect({p.x, p.y, p.z}, {d.x, d.y, d.z}, 0.0, 1e30);
+      if (!exit || exit->t < 1.0 || exit->t >= thinnest) continue;
+      thinnest = exit->t;
+      thinDistance = entry->t;
+      thinPoint = framed.eye + float(entry->t) * d;
+      thinDir = d;
+    }
+  if (thinnest > 1e29) return Error{"atlas: found no thin part of the organ in view"};
   render::Camera back = framed;
-  back.target = organ.mesh.positions[best];
-  back.eye = back.target + 60.0f * normals[best];
-  back.up = std::abs(normals[best].y) < 0.9f ? Float3{0, 1, 0} : Float3{1, 0, 0};
+  back.target = thinPoint;
+  back.eye = thinPoint - float(thinDistance / 3.0) * thinDir;
   back.nearMm = 0.5f;
   render::Light behind;
   behind.type = render::LightType::Directional;
-  behind.direction = normals[best];  // travels from the far side through the thin part
+  behind.direction = -1.0f * thinDir;  // from the far side, towards the camera
   behind.castsShadows = true;
   frames.push_back({"backlit", back, {behind}, false});
   return frames;
