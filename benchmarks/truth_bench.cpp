@@ -236,12 +236,19 @@ int main(int argc, char** argv) {
       ++covered;
     }
     relativeNoise /= double(std::max<std::int64_t>(covered, 1));
+    double noise2 = 0.0, signal2 = 0.0;  // the atlas's measure: sqrt(sum stderr^2 / sum radiance^2)
+    for (std::size_t i = 0; i < image->covered.size(); ++i)
+      if (image->covered[i]) {
+        const Float3 m = image->radiance[i], e = image->stderrs[i];
+        noise2 += double(dot(e, e));
+        signal2 += double(dot(m, m));
+      }
     const double pixelSamples = double(image->width * image->height) * image->samplesPerPixel;
     std::printf(
         "path tracer  %-7s %dx%d, %d spp, %d thread(s): %.2f s (%.2f CPU s), per CPU s %.0f pixel samples "
         "(%.0f on the organ), "
         "%.0f paths/s, %.1f collisions per path, capped %lld, lost %lld; per-pixel noise %.1f%% at %d spp, "
-        "organ pixels to 1%% noise per CPU s %.3f\n",
+        "organ pixels to 1%% noise per CPU s %.3f; rel RMS noise %.3f\n",
         truth::intersectorName(kind), image->width, image->height, image->samplesPerPixel, image->threads,
         image->seconds, cpu, pixelSamples / cpu, double(covered) * image->samplesPerPixel / cpu,
         double(image->paths) / cpu, double(image->interactions) / double(covered * image->samplesPerPixel),
@@ -249,7 +256,7 @@ int main(int argc, char** argv) {
         100.0 * relativeNoise, image->samplesPerPixel,
         // Efficiency: organ pixels brought to 1% noise per second, rate / samples needed, with the
         // samples needed (noise * sqrt(spp) / 0.01)^2.
-        double(covered) / cpu / (1e4 * relativeNoise * relativeNoise));
+        double(covered) / cpu / (1e4 * relativeNoise * relativeNoise), std::sqrt(noise2 / signal2));
   }
   return 0;
 }

@@ -19,6 +19,8 @@ TEST(AtlasMetrics, RelativeRmsAndPsnrOfKnownImages) {
   const AtlasScore s = scoreAgainstTruth(truth, method, mask);
   EXPECT_EQ(s.pixels, 2);
   EXPECT_NEAR(s.relRms, 0.1, 1e-6);
+  EXPECT_NEAR(s.gain, 1.1, 1e-6);         // the level is 10% high
+  EXPECT_NEAR(s.shapeRelRms, 0.0, 1e-6);  // and nothing else is wrong
   // PSNR by hand: the tone-mapped difference per channel.
   double mse = 0.0;
   for (int i = 0; i < 2; ++i) {

@@ -299,7 +299,8 @@ Result<AtlasResult> runAtlas(render::Renderer& renderer, const AtlasConfig& conf
       auto linear = linearFrame(renderer);
       if (!linear) return linear.error();
       const AtlasScore score = scoreAgainstTruth(truthLinear, *linear, T.covered);
-      result.rows.push_back({method, s.name, frame.name, median(times), score.relRms, score.psnrDb});
+      result.rows.push_back({method, s.name, frame.name, median(times), score.relRms, score.psnrDb,
+                             score.gain, score.shapeRelRms});
       auto it = bestError.find(method);
       if (it == bestError.end() || score.relRms < it->second.first)
         bestError[method] = {score.relRms, errorImage(truthLinear, *linear, T.covered, w, h)};

@@ -23,7 +23,7 @@ std::uint64_t truthKey(std::span<const Float3> positions, const SurfaceMesh& mes
                        const truth::TruthMaterial& material, const render::Scene& frame,
                        const truth::PathTraceSettings& settings, double budgetS);
 
-/// "truth_<frame>_<16 hex digits>.bin".
+/// "truth_v<tracer version>_<frame>_<16 hex digits>.bin".
 std::string truthCacheName(const std::string& frame, std::uint64_t key);
 
 /// The cached image, or none when the file is missing or unreadable.

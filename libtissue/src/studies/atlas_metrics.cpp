@@ -38,18 +38,31 @@ AtlasScore scoreAgainstTruth(std::span<const Float3> truth, std::span<const Floa
   s.relRms = std::numeric_limits<double>::quiet_NaN();
   s.psnrDb = std::numeric_limits<double>::quiet_NaN();
   if (truth.size() != method.size() || truth.size() != mask.size() || truth.empty()) return s;
-  double err = 0.0, ref = 0.0, mse = 0.0;
+  double err = 0.0, ref = 0.0, mse = 0.0, cross = 0.0;
   for (std::size_t i = 0; i < truth.size(); ++i) {
     if (!mask[i]) continue;
     const Float3 t = truth[i], m = method[i];
     err += sq(double(m.x - t.x)) + sq(double(m.y - t.y)) + sq(double(m.z - t.z));
     ref += sq(double(t.x)) + sq(double(t.y)) + sq(double(t.z));
+    cross += double(m.x) * double(t.x) + double(m.y) * double(t.y) + double(m.z) * double(t.z);
     const Float3 a = toneMap(t, exposure), b = toneMap(m, exposure);
     mse += sq(double(a.x - b.x)) + sq(double(a.y - b.y)) + sq(double(a.z - b.z));
     ++s.pixels;
   }
   if (s.pixels == 0) return s;
   s.relRms = ref > 0.0 ? std::sqrt(err / ref) : std::numeric_limits<double>::infinity();
+  s.gain = ref > 0.0 ? cross / ref : 0.0;
+  s.shapeRelRms = std::numeric_limits<double>::quiet_NaN();
+  if (s.gain > 0.0) {
+    double shape = 0.0;
+    for (std::size_t i = 0; i < truth.size(); ++i)
+      if (mask[i]) {
+        const Float3 t = truth[i], m = method[i];
+        shape += sq(double(m.x) / s.gain - double(t.x)) + sq(double(m.y) / s.gain - double(t.y)) +
+                 sq(double(m.z) / s.gain - double(t.z));
+      }
+    s.shapeRelRms = std::sqrt(shape / ref);
+  }
   mse /= 3.0 * s.pixels;
   s.psnrDb = mse > 0.0 ? 10.0 * std::log10(1.0 / mse) : std::numeric_limits<double>::infinity();
   return s;

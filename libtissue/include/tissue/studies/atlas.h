@@ -30,6 +30,10 @@ struct AtlasScore {
   double relRms = 0.0;  ///< sqrt(sum |M - T|^2 / sum |T|^2) over organ pixels and RGB, linear radiance
   double psnrDb = 0.0;  ///< 10 log10(1 / MSE) of the tone-mapped images (0..1), organ pixels and RGB
   int pixels = 0;       ///< organ pixels scored
+  /// The least-squares gain k = sum M.T / sum T.T: the method's overall level against the truth's.
+  double gain = 0.0;
+  /// The relative RMS of M / k against T: the error left once the level is matched (the shape).
+  double shapeRelRms = 0.0;
 };
 
 /// Scores `method` (linear RGB radiance per pixel, rows top to bottom, the truth's size) against
@@ -63,6 +67,8 @@ struct AtlasRow {
   double ms = 0.0;      ///< ms, median whole-frame time (renderImage, read back)
   double relRms = 0.0;
   double psnrDb = 0.0;
+  double gain = 0.0;         ///< AtlasScore::gain
+  double shapeRelRms = 0.0;  ///< AtlasScore::shapeRelRms
 };
 
 /// One frame's truth.
