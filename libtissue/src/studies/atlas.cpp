@@ -246,7 +246,15 @@ Result<AtlasResult> runAtlas(render::Renderer& renderer, const AtlasConfig& conf
     ts.threads = config.threads;
     ts.seed = 13;
     const double budget = config.truthSeconds;
-    ts.onPass = [budget](const truth::PathTraceProgress& p) { return p.seconds < budget; };
+    ts.onPass = [budget, &config, &frame](const truth::PathTraceProgress& p) {
+      if (config.onProgress) {
+        char line[160];
+        std::snprintf(line, sizeof line, "truth %s: %d spp, %.1f s, mean relative stderr %.3f",
+                      frame.name.c_str(), p.samplesPerPixel, p.seconds, p.meanRelativeStderr);
+        config.onProgress(line);
+      }
+      return p.seconds < budget;
+    };
     AtlasTruth at;
     at.frame = frame.name;
     auto material = scene::truthMaterialOf(organ);
@@ -278,6 +286,9 @@ Result<AtlasResult> runAtlas(render::Renderer& renderer, const AtlasConfig& conf
     std::vector<Float3> truthLinear(T.radiance.begin(), T.radiance.end());
     report.images.push_back({"truth_" + frame.name + ".png", toneMapped(truthLinear, w, h)});
     // 4 every method and setting: timed, read back, scored.
+    if (config.onProgress)
+      config.onProgress("frame " + frame.name + ": " + std::to_string(settings.size()) + " settings" +
+                        (at.fromCache ? " (truth from the cache)" : ""));
     std::map<std::string, std::pair<double, Image8>> bestError;  // per method: rel RMS, error image
     for (const Setting& s : settings) {
       const std::string method(render::shadingMethodName(s.method));

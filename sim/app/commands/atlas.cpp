@@ -4,12 +4,14 @@
 // against the path-traced truth of the same frame. The atlas and its report are tissue::studies'
 // (studies/atlas.h); this command makes the context and prints.
 
-#include "tissue/studies/atlas.h"
+#include <cstdio>
+
 #include "../organ_data.h"
 #include "command.h"
 #include "gl_environment.h"
 #include "output.h"
 #include "report_output.h"
+#include "tissue/studies/atlas.h"
 
 namespace tissue::sim_app {
 namespace {
@@ -39,6 +41,7 @@ int run(AtlasOptions o, const GlobalOptions& global) {
   o.config.cacheDir = !o.cache.empty()        ? std::filesystem::path(o.cache)
                       : !o.places.out.empty() ? std::filesystem::path(o.places.out) / "truth_cache"
                                               : std::filesystem::path{};
+  o.config.onProgress = [](const std::string& line) { std::fprintf(stderr, "atlas: %s\n", line.c_str()); };
   auto atlas = runOnOwnContext(o.config);
   if (!atlas) return fail(cmd, atlas.error().message);
   return finishStudy(cmd, std::move(atlas->output), o.places, global);

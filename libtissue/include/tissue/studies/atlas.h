@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -91,9 +92,12 @@ struct AtlasConfig {
   int width = 160, height = 120;   ///< pixels (quick: 96 x 72)
   int frames = 3;                  ///< timed frames per setting (median)
   int truthSpp = 256;              ///< samples per pixel at most (quick: 64)
-  double truthSeconds = 120.0;     ///< s per frame at most for the truth (quick: 8)
+  double truthSeconds = 120.0;     ///< s per frame at most for the truth (quick: 5)
   int threads = 0;                 ///< truth threads; 0: all cores
   std::string glRenderer;          ///< GL_RENDERER, for the report
+  /// One line of progress (each truth pass, each frame's methods), on the calling thread; empty:
+  /// none. The library never writes to stderr itself.
+  std::function<void(const std::string&)> onProgress;
 };
 
 /// The atlas: rows, truths and the report (atlas.json, atlas.md, atlas.csv, atlas.png: ms against
