@@ -1,7 +1,8 @@
 // Ray rates of the path-traced truth's two ray-mesh back ends (Embree 3 and the subsurface BVH)
 // on the data liver (data/meshes/liver.obj, 27.6k triangles, mm), single-threaded, and the path
 // tracer's sample rate on that liver with each. Prints median, p99 and worst rates over batches:
-//   tissue_truth_bench [--batches N] [--rays N] [--threads N]
+//   tissue_truth_bench [--batches N] [--rays N] [--threads N] [--spp N] [--roulette W] [--tracer-only 1]
+//                      [--liver-material 1] [--bvh 0] [--spectral 0]
 // The random-walk rays start just inside the surface (a random point of a random triangle, 0.01 mm
 // in) with a random inward direction, as the walk's queries do; camera rays come from a pinhole
 // camera framing the liver. "nearest 1.1" is the layer-depth query: the nearest surface point
@@ -16,9 +17,12 @@
 #include <string>
 #include <vector>
 
+#include "cpu_time.h"
 #include "tissue/core/statistics.h"
 #include "tissue/core/vec_math.h"
 #include "tissue/mesh/load_mesh.h"
+#include "tissue/scene/organ_assets.h"
+#include "tissue/scene/truth_view.h"
 #include "tissue/truth/path_tracer.h"
 
 namespace {
@@ -112,12 +116,20 @@ void printRates(const char* what, const char* backend, const std::vector<double>
 }  // namespace
 
 int main(int argc, char** argv) {
-  int batches = 30, threads = 1;
+  int batches = 30, threads = 1, spp = 16;
+  double roulette = -1.0;  // < 0: the default
+  bool tracerOnly = false, liverMaterial = false, withBvh = true, spectral = true;
   std::size_t rayCount = 200000;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--batches")) batches = std::atoi(argv[i + 1]);
     if (!std::strcmp(argv[i], "--rays")) rayCount = std::size_t(std::atol(argv[i + 1]));
     if (!std::strcmp(argv[i], "--threads")) threads = std::atoi(argv[i + 1]);
+    if (!std::strcmp(argv[i], "--spp")) spp = std::max(2, std::atoi(argv[i + 1]));
+    if (!std::strcmp(argv[i], "--roulette")) roulette = std::atof(argv[i + 1]);
+    if (!std::strcmp(argv[i], "--tracer-only")) tracerOnly = std::atoi(argv[i + 1]) != 0;
+    if (!std::strcmp(argv[i], "--liver-material")) liverMaterial = std::atoi(argv[i + 1]) != 0;
+    if (!std::strcmp(argv[i], "--bvh")) withBvh = std::atoi(argv[i + 1]) != 0;
+    if (!std::strcmp(argv[i], "--spectral")) spectral = std::atoi(argv[i + 1]) != 0;
   }
   const std::string path = std::string(TISSUE_BENCH_DATA_DIR) + "/meshes/liver.obj";
   auto mesh = mesh::loadMesh(path);
@@ -135,6 +147,7 @@ int main(int argc, char** argv) {
   const std::vector<Ray> walk = walkRays(*mesh, rayCount);
   const std::vector<Ray> cam = cameraRays(camera, 400, 300);
   for (truth::Intersector kind : {truth::Intersector::Embree, truth::Intersector::Bvh}) {
+    if (tracerOnly) break;
     const auto start = std::chrono::steady_clock::now();
     auto rays = truth::makeRayMesh(mesh->positions, mesh->triangles, kind);
     if (!rays) {
@@ -164,36 +177,86 @@ int main(int argc, char** argv) {
   organ.sigmaS = truth::Rgb{1.0, 1.0, 2.0};
   organ.g = {0.8, 0.8, 0.8};
   material.layers = {capsule, organ};
+  // --liver-material: the data liver's own material file (five layers per texel of its
+  // subsurface map, scene::truthMaterialOf), on its render mesh with UVs.
+  SurfaceMesh liverMesh = *mesh;
+  if (liverMaterial) {
+    scene::OrganSource source;
+    source.mesh = path;
+    source.material = std::string(TISSUE_BENCH_DATA_DIR) + "/materials/liver.json";
+    source.materialOptions.textureRoots = {TISSUE_BENCH_GENERATED_DATA_DIR, TISSUE_BENCH_DATA_DIR};
+    source.uvAtlasFallback = false;
+    auto assets = scene::loadOrganAssets(source);
+    if (!assets) {
+      std::printf("%s\n", assets.error().message.c_str());
+      return 1;
+    }
+    auto m = scene::truthMaterialOf(*assets);
+    if (!m) {
+      std::printf("%s\n", m.error().message.c_str());
+      return 1;
+    }
+    material = *m;
+    liverMesh = assets->mesh;
+    std::printf("liver material: %zu layers, %d subsurface map(s)\n", material.layers.size(),
+                material.maps.mapCount);
+  }
   truth::TruthLight lights[2];
   lights[1].type = truth::TruthLightType::Directional;
-  const truth::TruthMesh truthMesh{mesh->positions, mesh->triangles, {}};
+  const truth::TruthMesh truthMesh{liverMesh.positions, liverMesh.triangles, liverMesh.uvs};
   for (truth::Intersector kind : {truth::Intersector::Embree, truth::Intersector::Bvh}) {
     if (kind == truth::Intersector::Embree && !truth::embreeAvailable()) continue;
+    if (kind == truth::Intersector::Bvh && !withBvh) continue;
     truth::PathTraceSettings s;
     s.width = 80;
     s.height = 60;
-    s.samplesPerPass = 2;
+    s.samplesPerPass = spp / 2;
     s.passes = 2;
     s.threads = threads;
     s.intersector = kind;
     s.surfaceRoughness = 0.17;
+    if (roulette >= 0.0) s.rouletteWeight = roulette;
+    s.spectral = spectral;
+    const double cpu0 = bench::cpuSeconds();
     auto image = truth::renderPathTraced(truthMesh, material, lights, camera, s);
+    const double cpu = bench::cpuSeconds() - cpu0;
     if (!image) {
       std::printf("%s\n", image.error().message.c_str());
       return 1;
     }
     std::int64_t covered = 0;
-    for (std::uint8_t c : image->covered)
-      covered += c;
+    double relativeNoise = 0.0;  // mean over organ pixels of stderr / mean (luminance)
+    for (std::size_t i = 0; i < image->covered.size(); ++i) {
+      if (!image->covered[i]) continue;
+      const Float3 m = image->radiance[i], e = image->stderrs[i];
+      const double lum = 0.2126 * double(m.x) + 0.7152 * double(m.y) + 0.0722 * double(m.z);
+      const double err = std::sqrt(0.2126 * 0.2126 * double(e.x * e.x) + 0.7152 * 0.7152 * double(e.y * e.y) +
+                                   0.0722 * 0.0722 * double(e.z * e.z));
+      if (lum > 0.0) relativeNoise += err / lum;
+      ++covered;
+    }
+    relativeNoise /= double(std::max<std::int64_t>(covered, 1));
+    double noise2 = 0.0, signal2 = 0.0;  // the atlas's measure: sqrt(sum stderr^2 / sum radiance^2)
+    for (std::size_t i = 0; i < image->covered.size(); ++i)
+      if (image->covered[i]) {
+        const Float3 m = image->radiance[i], e = image->stderrs[i];
+        noise2 += double(dot(e, e));
+        signal2 += double(dot(m, m));
+      }
     const double pixelSamples = double(image->width * image->height) * image->samplesPerPixel;
     std::printf(
-        "path tracer  %-7s %dx%d, %d spp, %d thread(s): %.2f s, %.0f pixel samples/s (%.0f on the organ), "
-        "%.0f paths/s, %.1f collisions per path, capped %lld, lost %lld\n",
+        "path tracer  %-7s %dx%d, %d spp, %d thread(s): %.2f s (%.2f CPU s), per CPU s %.0f pixel samples "
+        "(%.0f on the organ), "
+        "%.0f paths/s, %.1f collisions per path, capped %lld, lost %lld; per-pixel noise %.1f%% at %d spp, "
+        "organ pixels to 1%% noise per CPU s %.3f; rel RMS noise %.3f\n",
         truth::intersectorName(kind), image->width, image->height, image->samplesPerPixel, image->threads,
-        image->seconds, pixelSamples / image->seconds,
-        double(covered) * image->samplesPerPixel / image->seconds, double(image->paths) / image->seconds,
-        double(image->interactions) / double(covered * image->samplesPerPixel * truth::kBands),
-        static_cast<long long>(image->cappedPaths), static_cast<long long>(image->lostPaths));
+        image->seconds, cpu, pixelSamples / cpu, double(covered) * image->samplesPerPixel / cpu,
+        double(image->paths) / cpu, double(image->interactions) / double(covered * image->samplesPerPixel),
+        static_cast<long long>(image->cappedPaths), static_cast<long long>(image->lostPaths),
+        100.0 * relativeNoise, image->samplesPerPixel,
+        // Efficiency: organ pixels brought to 1% noise per second, rate / samples needed, with the
+        // samples needed (noise * sqrt(spp) / 0.01)^2.
+        double(covered) / cpu / (1e4 * relativeNoise * relativeNoise), std::sqrt(noise2 / signal2));
   }
   return 0;
 }

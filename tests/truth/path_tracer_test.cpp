@@ -113,13 +113,7 @@ TEST(PathTracer, SlabDiffuseReflectanceMatches1dMonteCarlo) {
   EXPECT_EQ(image.cappedPaths, 0);
   EXPECT_EQ(image.lostPaths, 0);
   for (int band = 0; band < kBands; ++band) {
-    auto medium = toLayeredMedium(material, band);
-    ASSERT_TRUE(medium.ok()) << medium.error().message;
-    optics::MonteCarloSettings mc;
-    mc.photons = 100000;
-    mc.seed = 3;
-    mc.threads = 2;
-    auto r = optics::simulateMonteCarlo(*medium, mc);
+    auto r = test::slabMonteCarlo(material, band, 3);
     ASSERT_TRUE(r.ok()) << r.error().message;
     const char* names[] = {"Rd red (g 0)", "Rd green (g 0.75)", "Rd blue (g 0.9)"};
     expectWithin3Sigma(names[band], pt.mean[std::size_t(band)], pt.stderrs[std::size_t(band)], r->rd,

@@ -4,6 +4,8 @@
 // UVs (x, y) mapped to [0, 1]^2 (u grows with x, v with y).
 #include <vector>
 
+#include "tissue/optics/monte_carlo.h"
+
 #include "tissue/truth/path_tracer.h"
 
 namespace tissue::test {
@@ -27,5 +29,18 @@ struct SlabBox {
   }
   truth::TruthMesh mesh() const { return {positions, triangles, uvs}; }
 };
+
+/// The 1D Monte Carlo (MCML's model) of one band of a constant-depth material: 1e5 photons on
+/// 2 threads; an Error when the material has no slab form.
+inline Result<optics::MonteCarloResult> slabMonteCarlo(const truth::TruthMaterial& material, int band,
+                                                       std::uint64_t seed) {
+  auto medium = truth::toLayeredMedium(material, band);
+  if (!medium) return medium.error();
+  optics::MonteCarloSettings mc;
+  mc.photons = 100000;
+  mc.seed = seed;
+  mc.threads = 2;
+  return optics::simulateMonteCarlo(*medium, mc);
+}
 
 }  // namespace tissue::test

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "random_stream.h"
 #include "tissue/optics/fresnel.h"
@@ -28,11 +27,9 @@ struct Photon {
   bool alive = true;
 };
 
-// New direction after scattering by cos t and azimuth phi (MCML manual, "Spin").
-void spin(Photon& p, double cosT, double phi) {
+// New direction after scattering by cos t and the azimuth (cos phi, sin phi) (MCML manual, "Spin").
+void spin(Photon& p, double cosT, double cosP, double sinP) {
   const double sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT));
-  const double cosP = std::cos(phi);
-  const double sinP = std::sin(phi);
   if (std::abs(p.uz) > kCosZero) {
     p.ux = sinT * cosP;
     p.uy = sinT * sinP;
@@ -104,7 +101,9 @@ class BatchRunner {
     m_tally.absorbed[static_cast<std::size_t>(p.layer)] += dw;
     // Spin: Henyey-Greenstein polar angle, uniform azimuth.
     const double cosT = sampleHenyeyGreenstein(layer.g, m_rng.uniform());
-    spin(p, cosT, 2.0 * std::numbers::pi * m_rng.uniform());
+    double cosP = 0.0, sinP = 0.0;
+    m_rng.azimuth(cosP, sinP);
+    spin(p, cosT, cosP, sinP);
   }
 
   // Fresnel reflection or transmission at the boundary the photon sits on.
@@ -136,7 +135,7 @@ class BatchRunner {
   // Radial and total scoring of an escaping photon.
   void score(const Photon& p, bool transmitted) {
     (transmitted ? m_tally.tt : m_tally.rd) += p.w;
-    const double ring = std::floor(std::hypot(p.x, p.y) / m_grid.drMm);
+    const double ring = std::floor(std::sqrt(p.x * p.x + p.y * p.y) / m_grid.drMm);
     if (ring < m_grid.bins)
       (transmitted ? m_tally.ttRing : m_tally.rdRing)[static_cast<std::size_t>(ring)] += p.w;
   }

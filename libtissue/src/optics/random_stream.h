@@ -19,6 +19,21 @@ class RandomStream {
   /// Uniform in (0, 1], 53 random bits.
   double uniform() { return static_cast<double>((next() >> 11) + 1) * 0x1.0p-53; }
 
+  /// A uniform azimuth phi as (cos phi, sin phi) without trigonometry: a point (u, v) uniform in
+  /// the unit disc by rejection (4 / pi pairs on average) gives cos phi = (u^2 - v^2) / s and
+  /// sin phi = 2 u v / s with s = u^2 + v^2 (von Neumann 1951; the angle doubles, so the map is
+  /// uniform on the circle). sincos was 30% of the 1D Monte Carlo's time.
+  void azimuth(double& cosPhi, double& sinPhi) {
+    double u = 0.0, v = 0.0, s = 0.0;
+    do {
+      u = 2.0 * uniform() - 1.0;
+      v = 2.0 * uniform() - 1.0;
+      s = u * u + v * v;
+    } while (s > 1.0 || s < 1e-300);
+    cosPhi = (u * u - v * v) / s;
+    sinPhi = 2.0 * u * v / s;
+  }
+
  private:
   static std::uint64_t splitMix64(std::uint64_t& x) {
     std::uint64_t z = (x += 0x9E3779B97F4A7C15ull);

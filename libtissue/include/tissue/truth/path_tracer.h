@@ -4,17 +4,20 @@
 /// mesh filled with a layered material (tissue/truth/material.h), seen by a pinhole camera and lit
 /// by the renderer's lights (point and directional, without distance falloff). GL-free.
 ///
-/// Per pixel sample and per band, a camera path (Veach 1997, ch. 8; the random walk of pbrt-v3
-/// §15 and Cycles) enters the surface with Fresnel reflection or refraction (Snell; unpolarised
-/// Fresnel, tissue/optics/fresnel.h; total internal reflection inside), walks by delta tracking
-/// (Woodcock et al. 1965) against the band's largest extinction, weights each real collision by
-/// the albedo sigma_s / sigma_t, scatters by Henyey-Greenstein, and reflects or refracts again at
-/// every boundary crossing. At every real collision it adds next-event estimation of every light
-/// through the boundary: the refracted connection found on the mesh, the light's transmitted
-/// irradiance T E cos(theta_i) / cos(theta_t) (flux conservation across the interface), the
-/// medium's transmittance (exact in one layer, ratio tracking in several) and a shadow ray
-/// outside. Radiance leaving the tissue carries T (n_out / n_in)^2 (Veach 1997, §5.2).
-/// docs/DECISIONS.md ("The path-traced truth") lists what the estimator leaves out.
+/// Per pixel sample, one camera path carries all three bands (Veach 1997, ch. 8; the random walk
+/// of pbrt-v3 §15 and Cycles): it enters the surface with Fresnel reflection or refraction (Snell;
+/// unpolarised Fresnel, tissue/optics/fresnel.h; total internal reflection inside), walks by
+/// spectral tracking (Kutz et al. 2017: delta tracking, Woodcock et al. 1965, against one majorant
+/// over the bands, each band's weight corrected by the ratio of its collision probability to the
+/// one drawn with), weights each real collision by the albedo sigma_s / sigma_t per band, scatters
+/// by Henyey-Greenstein (the lobe of a hero band drawn per path, with the balance heuristic over the bands'
+/// whole-path densities where their g differ: Wilkie et al. 2014), and reflects or refracts again at every
+/// boundary crossing. At every real collision it adds next-event estimation of every light through the
+/// boundary: the refracted connection found on the mesh, the light's transmitted irradiance T E cos(theta_i)
+/// / cos(theta_t) (flux conservation across the interface), the medium's transmittance (exact in one layer,
+/// ratio tracking in several) and a shadow ray outside; deep collisions, whose every band's transmittance
+/// bound is small, connect by Russian roulette. Radiance leaving the tissue carries T (n_out / n_in)^2 (Veach
+/// 1997, §5.2). docs/DECISIONS.md ("The path-traced truth") lists what the estimator leaves out.
 ///
 /// Deterministic for a seed: every pixel and pass has its own random stream, so an image does
 /// not depend on the thread count. Progressive: passes of `samplesPerPass` samples per pixel are
@@ -99,15 +102,21 @@ struct PathTraceSettings {
   int threads = 0;         ///< worker threads; 0: std::thread::hardware_concurrency()
   Intersector intersector = Intersector::Best;
   Estimator estimator = Estimator::Full;
-  int maxInteractions = 100000;  ///< per path and band (collisions and boundary events); a path
+  int maxInteractions = 100000;  ///< per path (collisions, null collisions, boundary events); a path
                                  ///< that reaches it ends and is counted in TruthImage::cappedPaths
   /// Beckmann roughness alpha of the outer surface's reflection of the lights (Walter et al.
   /// 2007, eq. 25 and 27); 0: a smooth surface, whose mirror image of a point light covers no
   /// pixel. The renderer's Blinn-Phong exponent s corresponds to alpha = sqrt(2 / (s + 2)).
   /// Transport through the surface always treats it as smooth.
   double surfaceRoughness = 0.0;
-  bool jitter = true;            ///< pinhole: sample uniformly within each pixel (else its centre)
-  double rouletteWeight = 1e-4;  ///< Russian roulette below this path weight, survival 0.1 (MCML)
+  bool jitter = true;  ///< pinhole: sample uniformly within each pixel (else its centre)
+  /// true: one path carries the three bands (spectral tracking); false: a path per band (the
+  /// same transport with one band's weight, i.e. delta tracking of that band against the common
+  /// majorant): slower, but no spread of the weights between bands.
+  bool spectral = true;
+  /// Russian roulette where the path's largest band weight w falls below this: it survives with
+  /// probability w / rouletteWeight and then carries rouletteWeight.
+  double rouletteWeight = 0.1;
   /// After each pass; return false to stop early (the image then holds the passes done). Empty:
   /// no reports. The library never writes to stderr itself.
   std::function<bool(const PathTraceProgress&)> onPass;
@@ -122,10 +131,12 @@ struct TruthImage {
   std::vector<std::uint8_t> covered;           ///< 1 where the pixel's centre ray meets the mesh
   int samplesPerPixel = 0;                     ///< samples per pixel accumulated
   int passes = 0;                              ///< passes accumulated
-  std::int64_t paths = 0;                      ///< paths traced (samples * pixels * bands)
+  std::int64_t paths = 0;                      ///< paths traced (samples * pixels; each carries 3 bands)
   std::int64_t cappedPaths = 0;                ///< paths ended by maxInteractions
   std::int64_t lostPaths = 0;                  ///< paths ended by an inconsistent hit (mesh not closed)
   std::int64_t interactions = 0;               ///< real collisions, all paths
+  std::int64_t nextEvents = 0;                 ///< light connections traced at real collisions
+  std::int64_t skippedNextEvents = 0;          ///< light connections ended by their Russian roulette
   double seconds = 0.0;                        ///< wall-clock time, s
   int threads = 1;                             ///< worker threads used
   Intersector intersector = Intersector::Bvh;  ///< the back end that answered

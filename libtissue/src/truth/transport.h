@@ -1,0 +1,117 @@
+#pragma once
+// Private: the light transport of the path-traced truth (path_tracer.h) for one camera path
+// carrying all three bands at once. Spectral tracking (Kutz, Habel, Li & Novák 2017, "Spectral and
+// decomposition tracking for rendering heterogeneous volumes", §5.2, with Wrenninge's history-aware
+// collision probabilities) against one majorant over every band and layer: the event (real or
+// null collision) is drawn once for the path from the weighted average of the bands' coefficients,
+// and each band's weight takes the ratio of its own probability to the one drawn with. A real
+// collision keeps the collision estimator's albedo weighting (sigma_s / sigma_t per band); the new
+// direction comes from the one-sample MIS mixture of the bands' Henyey-Greenstein lobes (Veach
+// 1997, §9.2.4; the "hero wavelength" of Wilkie et al. 2014 with the balance heuristic). The
+// boundary (Fresnel, Snell) does not depend on the band. Next-event estimation shares its
+// connection through the boundary between the bands and is itself Russian-rouletted where the
+// collision is so deep that every band's transmittance bound is small.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "../optics/random_stream.h"
+#include "tissue/subsurface/layer_stack.h"
+#include "tissue/truth/path_tracer.h"
+
+namespace tissue::truth::detail {
+
+/// Per-thread tallies (integers: their sum does not depend on the split between threads).
+struct PathStats {
+  std::int64_t capped = 0;
+  std::int64_t lost = 0;
+  std::int64_t interactions = 0;
+  std::int64_t nextEvents = 0;     ///< light connections traced
+  std::int64_t skippedEvents = 0;  ///< light connections ended by their Russian roulette
+};
+
+/// Per-thread, per-pixel scratch: the last connection normal per light (the next collision's
+/// first guess of the fixed point in nextEvent). Reset at each pixel so that an image does not
+/// depend on the rows a thread takes.
+struct PathScratch {
+  std::vector<glm::dvec3> lightNormal;
+  std::vector<std::uint8_t> lightNormalValid;
+  void reset(std::size_t lights) {
+    lightNormal.assign(lights, glm::dvec3(0.0));
+    lightNormalValid.assign(lights, 0);
+  }
+};
+
+class Transport {
+ public:
+  Transport(const RayMesh& rays, const TruthMesh& mesh, const TruthMaterial& material,
+            std::span<const TruthLight> lights, const PathTraceSettings& settings);
+
+  /// Radiance (light units, per band) arriving along the ray o + t d (d unit) from the scene.
+  /// `bands`: the initial band weights (all ones: the three bands on one path; a unit vector:
+  /// that band alone, whose spectral tracking is then plain delta tracking).
+  Rgb trace(glm::dvec3 o, glm::dvec3 d, optics::detail::RandomStream& rng, PathStats& stats,
+            PathScratch& scratch, const Rgb& bands = {1.0, 1.0, 1.0}) const;
+
+  std::size_t lightCount() const { return m_lights.size(); }
+
+ private:
+  // One layer, all bands.
+  struct LayerBands {
+    Rgb sigmaT{}, sigmaS{}, g{};  // mm^-1, mm^-1, mean cosine
+    bool grey = true;             // g equal in every band
+  };
+  struct PreparedLight {
+    bool directional = false;
+    glm::dvec3 position{0.0};  // mm
+    glm::dvec3 toLight{0.0};   // unit, directional lights
+    Rgb irradiance{};          // pi * radiance: irradiance on a surface facing the light
+    bool shadows = true;
+  };
+  // The path's last nearest-surface query (layerAt, depthBounds).
+  struct DepthCache {
+    glm::dvec3 x{0.0};     // where, mm
+    double depthMm = 0.0;  // its depth, mm (a lower bound when not exact)
+    bool exact = false;
+    bool valid = false;
+  };
+
+  double hitDistance(const MeshHit& hit, const glm::dvec3& o, const glm::dvec3& d) const;
+  void refreshDepth(const glm::dvec3& p, DepthCache& cache) const;
+  int layerAt(const glm::dvec3& p, DepthCache& cache) const;
+  int constantDepthLayer(double depthMm) const;
+  Rgb transmittance(const glm::dvec3& x, const glm::dvec3& dir, double length,
+                    optics::detail::RandomStream& rng, DepthCache& cache) const;
+  bool occluded(const glm::dvec3& from, const glm::dvec3& dir, double maxT) const;
+  double neeSurvival(const glm::dvec3& y, const Rgb& w, DepthCache& cache) const;
+  Rgb nextEvent(const glm::dvec3& y, const glm::dvec3& d, const LayerBands& layer, const Rgb& w,
+                optics::detail::RandomStream& rng, DepthCache& cache, PathScratch& scratch,
+                PathStats& stats) const;
+  glm::dvec3 scatter(const glm::dvec3& d, const LayerBands& layer, std::size_t hero, Rgb& ratio,
+                     optics::detail::RandomStream& rng) const;
+  Rgb glossy(const glm::dvec3& p, const glm::dvec3& toEye, const glm::dvec3& n) const;
+
+  const RayMesh& m_rays;
+  const TruthMesh& m_mesh;
+  const PathTraceSettings& m_settings;
+  double m_nTissue = 1.4, m_nAmbient = 1.0, m_eps = 1e-5;
+  std::vector<glm::dvec3> m_faceNormal;
+  std::vector<glm::dvec3> m_faceVertex;  // each triangle's first vertex, mm
+  std::vector<LayerBands> m_layers;
+  double m_majorant = 0.0;     // mm^-1, the largest sigma_t over bands and layers
+  Rgb m_sigmaTMin{};           // mm^-1, per band the smallest sigma_t over the layers
+  double m_neeRadiusMm = 0.0;  // mm, how deep the depth queries look (the roulette's reach)
+  int m_layerCount = 1;
+  bool m_perTexel = false;
+  subsurface::LayerStack m_stack;
+  std::vector<double> m_boundaryMm;
+  double m_deepestBoundaryMm = 0.0;  // mm, slightly beyond the deepest boundary
+  std::vector<PreparedLight> m_lights;
+};
+
+}  // namespace tissue::truth::detail
