@@ -92,7 +92,7 @@ struct AtlasConfig {
   int width = 160, height = 120;   ///< pixels (quick: 96 x 72)
   int frames = 3;                  ///< timed frames per setting (median)
   int truthSpp = 256;              ///< samples per pixel at most (quick: 64)
-  double truthSeconds = 120.0;     ///< s per frame at most for the truth (quick: 5)
+  double truthSeconds = 120.0;     ///< s per frame at most for the truth (quick: 5; backlit 3x)
   int threads = 0;                 ///< truth threads; 0: all cores
   std::string glRenderer;          ///< GL_RENDERER, for the report
   /// One line of progress (each truth pass, each frame's methods), on the calling thread; empty:
