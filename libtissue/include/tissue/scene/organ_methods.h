@@ -3,12 +3,13 @@
 /// Every shading method's settings for one organ, derived from its material file (the one
 /// reader, material_file.h) and its uploaded textures: written once, for tissue-sim, the viewer,
 /// the C API and any host.
-///   lit            Blinn-Phong with the painted base colour and normal map
+///   lit            Blinn-Phong with the optical base colour (uploadOrganTextures) and normal map
 ///   separable      Jimenez et al. 2015 separable SSS: a kernel of the first layer's dipole
 ///                  profile (model and taps from MethodChoices; Freude eq. 5.10, 5.17-5.18)
 ///   texture-space  d'Eon et al. 2007 with the culled, depth-sized and clipped maps of Jimenez et
 ///                  al. 2008: Gaussians fitted to the same profile (d'Eon eq. 4.15)
-///   ray-march      François et al. 2006: the whole layer stack and its subsurface map
+///   ray-march      François et al. 2006: the whole layer stack and its subsurface map, with
+///                  each layer's multiple scattering, Fresnel and the surface specular (§3)
 ///   parallax       Oat 2006 (Norberg 2010 §2.2): the inner layer (inner_base) under the
 ///                  outer one's opacity
 
@@ -51,8 +52,11 @@ struct OrganTextures {
   render::TextureHandle baseColor, normalMap, opacity, innerBase, subsurfaceMap;
 };
 
-/// Uploads the organ's textures (the subsurface map as linear data). The renderer's context
-/// must be current.
+/// Uploads the organ's textures (the subsurface map as linear data). The colour comes from the
+/// material's optics (material_file.h): the base colour is opticalBaseColor (the painted
+/// base_color at most a luminance detail, MaterialFile::baseColorDetail), and with a subsurface
+/// map the parallax inner layer is opticalLayerImage at the default parallax depth
+/// (MethodChoices{}.parallaxDepthMm). The renderer's context must be current.
 Result<OrganTextures> uploadOrganTextures(render::Renderer& renderer, const OrganAssets& organ);
 /// Frees them (context current).
 void destroyOrganTextures(render::Renderer& renderer, OrganTextures& textures);
