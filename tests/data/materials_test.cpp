@@ -41,7 +41,8 @@ TEST(DataMaterials, ParseWithPositiveCoefficientsAndSources) {
       for (int c = 0; c < 3; ++c) {
         EXPECT_GT(sigmaS[c], 0.0) << name << " layer " << i;
         EXPECT_GE(sigmaT[c], sigmaS[c]) << name << " layer " << i;  // sigma_a = sigma_t - sigma_s >= 0
-        EXPECT_LT(sigmaT[c], 100.0) << name << " layer " << i << " (mm^-1, not cm^-1 or m^-1)";
+        // Whole blood reaches about 130 mm^-1 (Bosschaart 2014); cm^-1 would be ten times that.
+        EXPECT_LT(sigmaT[c], 1000.0) << name << " layer " << i << " (mm^-1, not cm^-1 or m^-1)";
       }
     }
     // The files named in the material exist.

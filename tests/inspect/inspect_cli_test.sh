@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # tissue-sim inspect end to end: the default scenario and the shipped session each write every
-# view (PNG and .vtp) of a frame; bad input (a frame past the end, a session of another mesh, a
-# missing file) is one line on stderr with the fix, and a non-zero exit.
+# view (PNG and .vtp) of a frame; simulate --pvd writes a 12-frame ParaView series; bad input (a
+# frame past the end, a session of another mesh, a missing file) is one line on stderr with the
+# fix, and a non-zero exit.
 #   inspect_cli_test.sh TISSUE_SIM DATA_DIR OUT_DIR
 set -u
 sim="$1"; data="$2"; dir="$3"; rm -rf "$dir"; mkdir -p "$dir"
@@ -20,6 +21,15 @@ for run in scenario session; do
   done
 done
 grep -q '"frame": 190' "$dir/scenario.json" || fail "inspect --json lacks the frame"
+
+# simulate --pvd: the ParaView series of every frame (one .vtp each, listed in the .pvd).
+"$sim" simulate "$data/scenarios/liver_poke_grasp.json" --frames 12 --out "$dir/simulate" --pvd "$dir/pvd" \
+  >/dev/null || fail "simulate --pvd exit $?"
+pvd=$(ls "$dir"/pvd/*.pvd 2>/dev/null | head -1)
+[ -n "$pvd" ] || fail "simulate --pvd wrote no .pvd"
+[ "$(grep -c '<DataSet ' "$pvd")" -eq 12 ] || fail "the .pvd lists $(grep -c '<DataSet ' "$pvd") frames, not 12"
+[ "$(ls "$dir"/pvd/ | grep -c '\.vt[pu]$')" -eq 12 ] || fail "not 12 frame files beside the .pvd"
+grep -q '"pvd"' "$dir/simulate/summary.json" || fail "summary.json does not name the series"
 
 # Bad input. The session of another mesh keeps its scenario reachable (an absolute path).
 sed -e 's/"mesh_vertices": [0-9]*/"mesh_vertices": 12/' \

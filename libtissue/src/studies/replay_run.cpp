@@ -3,11 +3,14 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "json_text.h"
 #include "loop_detail.h"
 #include "tissue/core/image.h"
 #include "tissue/core/statistics.h"
+#include "tissue/inspect/organ_snapshot.h"
+#include "tissue/inspect/pvd_series.h"
 #include "tissue/scenario/scenario_run.h"
 #include "tissue/scene/session.h"
 #include "tissue/studies/loop_report.h"
@@ -33,11 +36,19 @@ Result<std::string> replaySession(const ReplayConfig& o, const scene::SceneSetti
   // The frames, each one pass through the library's loop with the recorded input.
   scene::LoopRecord record;
   Image8 image;
+  std::optional<inspect::PvdSeries> pvd;  // issue 15: one .vtp per frame, the .pvd rewritten atomically
+  if (!o.pvdDir.empty()) {
+    auto series = inspect::PvdSeries::create(o.pvdDir);
+    if (!series) return series.error();
+    pvd = std::move(*series);
+  }
   for (std::size_t i = 0; i < session->frames.size(); ++i) {
     auto f =
         scene->advance(0, scene::sessionInput(*session, i), o.render ? &image : nullptr, o.width, o.height);
     if (!f) return Error{session->file.string() + ": frame " + std::to_string(i) + ": " + f.error().message};
     record.add(*f, loop);
+    if (pvd)
+      if (auto w = pvd->addFrame(inspect::snapshotOf(loop.run(), loop.surface())); !w) return w.error();
     if (o.render && !o.outDir.empty() && (i + 1) % std::size_t(o.imageEvery) == 0) {
       char name[32];
       std::snprintf(name, sizeof name, "frame_%04zu.png", i + 1);
@@ -69,6 +80,7 @@ Result<std::string> replaySession(const ReplayConfig& o, const scene::SceneSetti
     if (auto w = writeReport(o.outDir, report); !w) return w.error();
     j["out"] = o.outDir.string();
   }
+  if (pvd) j["pvd"] = pvd->pvdPath().string();
   return j.dump();
 }
 

@@ -3,7 +3,7 @@
 // views of that frame (PNG with colour bars, and a .vtp each; tissue/inspect/inspection_views.h);
 // with --pvd also the ParaView series of frames 1..N (tissue/inspect/pvd_series.h) and its cost.
 #include "command.h"
-#include "loop_setup.h"
+#include "organ_data.h"
 #include "output.h"
 #include "tissue/core/atomic_file.h"
 #include "tissue/core/statistics.h"
@@ -12,6 +12,7 @@
 #include "tissue/inspect/pvd_series.h"
 #include "tissue/scenario/scenario_run.h"
 #include "tissue/scene/session.h"
+#include "tissue/studies/loop_report.h"
 
 namespace tissue::sim_app {
 namespace {
@@ -36,7 +37,9 @@ Result<nlohmann::json> inspect(const InspectOptions& o) {
     session = std::move(*loaded);
     scenarioFile = session->scenario;
   }
-  auto scene = makeLoopScene(nullptr);  // the simulation only: no GL
+  scene::SceneSettings settings = dataSceneSettings();
+  settings.gl = false;  // the simulation only: the views are VTK's
+  auto scene = scene::Scene::create({}, settings);
   if (!scene) return scene.error();
   if (auto added = scene->addOrgan({.scenario = scenarioFile}); !added) return added.error();
   const scene::OrganLoop& loop = *scene->loop(0);
@@ -77,13 +80,15 @@ Result<nlohmann::json> inspect(const InspectOptions& o) {
     list.push_back({{"view", v.name},
                     {"png", v.png.string()},
                     {"vtp", v.data.string()},
-                    {"render_ms", rounded(v.renderMs)},
-                    {"write_ms", rounded(v.writeMs)}});
+                    {"render_ms", studies::threeDigits(v.renderMs)},
+                    {"write_ms", studies::threeDigits(v.writeMs)}});
   nlohmann::json report{{"input", o.input}, {"frame", frame}, {"out", o.outDir.string()}, {"views", list}};
   if (series) {
     const auto ms = [](const std::vector<double>& samples) {
       const auto s = summarizeSamples(samples);
-      return nlohmann::json{{"median", rounded(s.median)}, {"p99", rounded(s.p99)}, {"max", rounded(s.max)}};
+      return nlohmann::json{{"median", studies::threeDigits(s.median)},
+                            {"p99", studies::threeDigits(s.p99)},
+                            {"max", studies::threeDigits(s.max)}};
     };
     report["pvd"] = {{"file", series->pvdPath().string()},
                      {"frames", series->frameCount()},

@@ -17,6 +17,8 @@ void registerReplayCommand(CLI::App& app, const GlobalOptions& global, int& exit
       "re-run a recorded session headless and deterministically (the deformation-plus-render test)");
   cmd->add_option("session", o->session, "session file (data/sessions/*.json, docs/SESSIONS.md)")->required();
   cmd->add_flag("--render", o->render, "also upload and render every frame (lit, offscreen)");
+  cmd->add_option("--pvd", o->pvdDir,
+                  "write the ParaView series (.pvd, one .vtp per frame) into this folder");
   cmd->add_option("--out", o->outDir, "folder for report.json, frames.csv and (with --render) frame images");
   cmd->add_option("--width", o->width, "rendered width, pixels (default 480)")->check(CLI::Range(16, 8192));
   cmd->add_option("--height", o->height, "rendered height, pixels (default 360)")

@@ -1,6 +1,8 @@
 // tissue-sim simulate SCENARIO.json: runs a scenario file (docs/SCENARIOS.md) and writes the
 // per-frame metrics (frames.csv), a summary (summary.json), and with --images a render of the
 // last frame.
+#include <optional>
+
 #include "cli_options.h"
 #include "command.h"
 #include "gl_environment.h"
@@ -8,6 +10,7 @@
 #include "output.h"
 #include "tissue/core/atomic_file.h"
 #include "tissue/core/stopwatch.h"
+#include "tissue/inspect/pvd_series.h"
 #include "tissue/scenario/scenario_run.h"
 #include "tissue/studies/scenario_summary.h"
 
@@ -20,6 +23,7 @@ struct SimulateOptions {
   int frames = 0;          ///< 0: the scenario's
   std::string integrator;  ///< empty: the scenario's
   bool images = false;
+  std::string pvdDir;  ///< non-empty: the ParaView series of every frame
 };
 
 /// Renders the run's current shape, lit (a scene::Scene of the static organ on a headless context).
@@ -56,15 +60,24 @@ int runSimulate(const SimulateOptions& o, const GlobalOptions& global) {
   Stopwatch wall;
   std::vector<scenario::FrameMetrics> frames;
   frames.reserve(static_cast<std::size_t>(parsed->frames));
+  std::optional<inspect::RunSeries> pvd;
+  if (!o.pvdDir.empty()) {
+    auto series = inspect::RunSeries::create(**run, o.pvdDir);
+    if (!series) return fail("simulate", series.error().message);
+    pvd = std::move(*series);
+  }
   for (int f = 0; f < parsed->frames; ++f) {
     auto m = (*run)->advance();
     if (!m) return fail("simulate", m.error().message);
     frames.push_back(*m);
+    if (pvd)
+      if (auto w = pvd->addFrame(**run); !w) return fail("simulate", w.error().message);
   }
   auto summary = nlohmann::json::parse(studies::scenarioRunSummaryJson(**run, frames, wall.elapsedMs()));
   if (auto ok = writeTextFileAtomic(out / "frames.csv", scenario::framesCsv(frames)); !ok)
     return fail("simulate", ok.error().message);
   summary["frames_csv"] = (out / "frames.csv").string();
+  if (pvd) summary["pvd"] = pvd->series().pvdPath().string();
   if (o.images) {
     auto image = renderLastFrame(**run, out / "last_frame.png");
     if (image)
@@ -89,6 +102,8 @@ void registerSimulateCommand(CLI::App& app, const GlobalOptions& global, int& ex
   cmd->add_option("--out", o->outDir, "output folder (default out/<scenario name>)");
   cmd->add_option("--frames", o->frames, "frames to run instead of the scenario's");
   cmd->add_option("--integrator", o->integrator, "integrator instead of the scenario's (to compare them)");
+  cmd->add_option("--pvd", o->pvdDir,
+                  "write the ParaView series (.pvd, one file per frame) into this folder");
   cmd->add_flag("--images", o->images, "also render the last frame (needs UVs and a material file)");
   cmd->callback([o, &global, &exitCode] { exitCode = runSimulate(*o, global); });
 }

@@ -22,14 +22,15 @@ struct ReplayConfig {
   int height = 360;                 ///< pixels
   int imageEvery = 100;             ///< with render and outDir: every this many frames an image
   bool logContext = true;           ///< one stderr line naming the headless context (render)
+  std::filesystem::path pvdDir{};   ///< non-empty: the ParaView series of every frame (inspect::PvdSeries)
 };
 
 /// Replays `config.session` with the scenario it was recorded with in a scene of `scene`'s
 /// settings (its material files, shared meshes, shaders, headless backend). Returns the report
 /// as a JSON object's text: session, scenario, frames, rendered, positions_sha256, frame_ms
 /// {median, p99, max}, phases_ms (loop_report.h), max_contact_force_N, divergence_events,
-/// nan_frames, and "out" when it wrote into outDir. A session of another mesh, a missing file or
-/// a non-finite pose gives an error naming the file and frame.
+/// nan_frames, "out" when it wrote into outDir, and "pvd" (the .pvd's path) with pvdDir. A session of another
+/// mesh, a missing file or a non-finite pose gives an error naming the file and frame.
 Result<std::string> replaySession(const ReplayConfig& config, const scene::SceneSettings& scene);
 
 }  // namespace tissue::studies
