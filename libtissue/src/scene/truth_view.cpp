@@ -1,6 +1,8 @@
 // The renderer's frame as the path-traced truth's inputs (truth_view.h).
 #include "tissue/scene/truth_view.h"
 
+#include "tissue/scene/truth_material.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -36,44 +38,35 @@ Result<truth::TruthMaterial> truthMaterialOf(const OrganAssets& organ) {
   const MaterialFile& file = organ.material;
   if (file.layers.empty())
     return Error{where(organ) + ": layers is empty; give at least one layer (top first)"};
-  truth::TruthMaterial m;
-  m.ambientN = 1.0;
   std::size_t used = 1;  // layers the transport sees: the first alone without a subsurface map
   if (organ.subsurfaceMap) {
     auto stack = layerStack(file, *organ.subsurfaceMap);
     if (!stack) return stack.error();
-    m.maps = std::move(stack->maps);
-    m.depthScaleMm = stack->depthScaleMm;
-    used = std::size_t(m.maps.mapCount) * 4 + 1;
+    used = std::size_t(stack->maps.mapCount) * 4 + 1;
     if (file.layers.size() != used)
       return Error{where(organ) + ": layers has " + std::to_string(file.layers.size()) +
                    " entries but its subsurface map bounds " + std::to_string(used) +
                    "; give one layer per boundary and one below"};
     // A layer depth outside the mesh: the deepest boundary must lie well inside the organ.
     float deepest = 0.0f;
-    for (float v : m.maps.depths)
+    for (float v : stack->maps.depths)
       deepest = std::max(deepest, v);
     const Float3 size = organ.bounds.hi - organ.bounds.lo;
     const float limit = 0.5f * std::min({size.x, size.y, size.z});
-    if (deepest * m.depthScaleMm > limit)
-      return Error{where(organ) + ": depth_scale_mm = " + std::to_string(m.depthScaleMm) +
-                   " puts the deepest layer boundary " + std::to_string(deepest * m.depthScaleMm) +
+    if (deepest * stack->depthScaleMm > limit)
+      return Error{where(organ) + ": depth_scale_mm = " + std::to_string(stack->depthScaleMm) +
+                   " puts the deepest layer boundary " + std::to_string(deepest * stack->depthScaleMm) +
                    " mm below the surface, outside the mesh (half its smallest extent is " +
                    std::to_string(limit) + " mm); lower depth_scale_mm"};
   }
-  for (std::size_t i = 0; i < used; ++i) {
+  for (std::size_t i = 0; i < used; ++i)
     if (auto ok = checkLayer(organ, i); !ok) return ok.error();
-    const MaterialLayer& l = file.layers[i];
-    truth::TruthLayer layer;
-    layer.sigmaS = truth::Rgb{l.sigmaS.x, l.sigmaS.y, l.sigmaS.z};
-    layer.sigmaA = truth::Rgb{l.sigmaT.x - l.sigmaS.x, l.sigmaT.y - l.sigmaS.y, l.sigmaT.z - l.sigmaS.z};
-    layer.g = {l.g, l.g, l.g};
-    layer.n = file.ior;
-    layer.name = l.name;
-    m.layers.push_back(layer);
-  }
-  if (auto ok = truth::validateMaterial(m); !ok) return Error{where(organ) + ": " + ok.error().message};
-  return m;
+  // The conversion itself is the material reader's (truth_material.h), so the truth and the
+  // renderer's methods read one file one way; without a map the top layer alone, unbounded.
+  if (organ.subsurfaceMap) return truthMaterial(file, *organ.subsurfaceMap);
+  MaterialFile top = file;
+  top.layers.resize(1);
+  return truthMaterial(top, std::span<const double>{});
 }
 
 truth::TruthCamera truthCameraOf(const render::Camera& camera) {
