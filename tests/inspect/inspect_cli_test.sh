@@ -22,6 +22,13 @@ for run in scenario session; do
 done
 grep -q '"frame": 190' "$dir/scenario.json" || fail "inspect --json lacks the frame"
 
+# --truth-error: the separable method's error against a short truth, mapped onto the mesh.
+"$sim" --json inspect "$data/scenarios/liver_poke_grasp.json" --frame 60 --out "$dir/truth" --width 480 \
+  --height 360 --truth-error separable --truth-seconds 2 >"$dir/truth.json" || fail "inspect --truth-error exit $?"
+[ -s "$dir/truth/truth_error.png" ] && [ -s "$dir/truth/truth_error.vtp" ] || fail "no truth_error view"
+grep -q '"noise_rel_rms"' "$dir/truth.json" || fail "inspect --truth-error reports no truth noise"
+grep -q '"visible_vertices": [1-9]' "$dir/truth.json" || fail "no vertex sees the truth error"
+
 # simulate --pvd: the ParaView series of every frame (one .vtp each, listed in the .pvd).
 "$sim" simulate "$data/scenarios/liver_poke_grasp.json" --frames 12 --out "$dir/simulate" --pvd "$dir/pvd" \
   >/dev/null || fail "simulate --pvd exit $?"
@@ -45,5 +52,6 @@ check() {  # check EXPECTED_TEXT ARGS...: one line on stderr containing the text
 check "pass --frame 0..1000" inspect "$data/scenarios/liver_poke_grasp.json" --frame 1001 --out "$dir/x"
 check "replay it with the scenario it was recorded with" inspect "$dir/other.json" --frame 1 --out "$dir/x"
 check "missing.json" inspect "$dir/missing.json" --out "$dir/x"
+check "--truth-error: " inspect "$data/scenarios/liver_poke_grasp.json" --frame 1 --out "$dir/x" --truth-error glossy
 [ "$status" -eq 0 ] && echo "ok"
 exit "$status"

@@ -50,6 +50,7 @@ vtkSmartPointer<vtkLookupTable> lookupTable(const std::array<Rgb, N>& points, st
                          points[k][1] + f * (points[k + 1][1] - points[k][1]),
                          points[k][2] + f * (points[k + 1][2] - points[k][2]), 1.0);
   }
+  table->SetNanColor(0.35, 0.35, 0.35, 1.0);  // no value (e.g. a hidden vertex of the truth error)
   // A flat field still gets a bar with a readable range.
   if (!(range[1] > range[0])) range = {range[0] - 0.5, range[0] + 0.5};
   table->SetTableRange(range[0], range[1]);

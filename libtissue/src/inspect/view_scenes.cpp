@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 #include "tissue/core/vec_math.h"
@@ -107,10 +108,13 @@ vtkSmartPointer<vtkPolyData> toolSphere(const ToolState& tool) {
   return poly;
 }
 
+/// The range of the finite values (a field is NaN where it has no value, e.g. the truth error
+/// on hidden vertices); [0, 1] when there are none.
 std::array<double, 2> rangeOf(std::span<const float> values) {
-  if (values.empty()) return {0.0, 1.0};
-  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
-  return {double(*lo), double(*hi)};
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (float v : values)
+    if (std::isfinite(v)) lo = std::min(lo, double(v)), hi = std::max(hi, double(v));
+  return lo <= hi ? std::array<double, 2>{lo, hi} : std::array<double, 2>{0.0, 1.0};
 }
 
 /// A range symmetric about `centre`, as wide as the largest deviation (diverging maps).

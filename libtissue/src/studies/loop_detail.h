@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "tissue/context/gl_context.h"
 #include "tissue/core/result.h"
@@ -14,6 +15,8 @@
 
 namespace tissue::studies::detail {
 
+/// {median, p99, max} of `ms`, each threeDigits.
+nlohmann::json msSummary(const std::vector<double>& ms);
 nlohmann::json loopPhases(const scene::LoopPhaseSamples& samples);
 nlohmann::json instrument(const scene::LoopRecord& record);
 nlohmann::json passTimings(const render::RenderTimings& timings);

@@ -12,6 +12,11 @@
 namespace tissue::studies {
 namespace detail {
 
+nlohmann::json msSummary(const std::vector<double>& ms) {
+  const auto s = summarizeSamples(ms);
+  return {{"median", threeDigits(s.median)}, {"p99", threeDigits(s.p99)}, {"max", threeDigits(s.max)}};
+}
+
 nlohmann::json loopPhases(const scene::LoopPhaseSamples& samples) {
   nlohmann::json j = nlohmann::json::array();
   for (const auto& [name, values] : samples.phases) {

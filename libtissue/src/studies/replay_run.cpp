@@ -59,16 +59,12 @@ Result<std::string> replaySession(const ReplayConfig& o, const scene::SceneSetti
   // Report: the fingerprint, the frame times and every phase.
   const auto summary = scenario::summarize(record.frames);
   const auto& total = record.phases.phases.back().second;
-  const auto frameMs = summarizeSamples(total);
   nlohmann::json j{{"session", session->file.string()},
                    {"scenario", loop.run().scenario().file.string()},
                    {"frames", session->frames.size()},
                    {"rendered", o.render},
                    {"positions_sha256", scene::positionsSha256(loop.geometricPositions())},
-                   {"frame_ms",
-                    {{"median", threeDigits(frameMs.median)},
-                     {"p99", threeDigits(frameMs.p99)},
-                     {"max", threeDigits(frameMs.max)}}},
+                   {"frame_ms", detail::msSummary(total)},
                    {"phases_ms", detail::loopPhases(record.phases)},
                    {"max_contact_force_N", threeDigits(summary.maxForceN)},
                    {"divergence_events", summary.divergenceEvents},
