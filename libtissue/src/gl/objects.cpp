@@ -1,4 +1,4 @@
-// Deleting owned GL names; one explicit instantiation per object kind.
+// Deleting owned GL names; one explicit instantiation per object kind; the census of live names.
 #include "tissue/gl/objects.h"
 
 namespace tissue::gl {
@@ -31,6 +31,21 @@ void Object<K>::reset() {
   m_gl = nullptr;
   m_id = 0;
   m_owned = false;
+}
+
+ObjectCensus countLiveObjects(const GlApi& gl, GLuint maxName) {
+  ObjectCensus c;
+  for (GLuint id = 1; id <= maxName; ++id) {
+    c.buffers += gl.IsBuffer(id) ? 1 : 0;
+    c.vertexArrays += gl.IsVertexArray(id) ? 1 : 0;
+    c.textures += gl.IsTexture(id) ? 1 : 0;
+    c.framebuffers += gl.IsFramebuffer(id) ? 1 : 0;
+    c.renderbuffers += gl.IsRenderbuffer(id) ? 1 : 0;
+    c.queries += gl.IsQuery(id) ? 1 : 0;
+    c.programs += gl.IsProgram(id) ? 1 : 0;
+    c.shaders += gl.IsShader(id) ? 1 : 0;
+  }
+  return c;
 }
 
 template class Object<ObjectKind::Buffer>;

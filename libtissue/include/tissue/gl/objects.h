@@ -68,6 +68,27 @@ using Renderbuffer = Object<ObjectKind::Renderbuffer>;  ///< glGenRenderbuffers
 using Query = Object<ObjectKind::Query>;                ///< glGenQueries
 using Program = Object<ObjectKind::Program>;            ///< glCreateProgram
 
+/// The GL object names alive in the current context's share group, counted by asking GL itself
+/// (glIsBuffer, glIsTexture, ...) for every name 1..maxName: a leak check that does not trust
+/// this library's own bookkeeping (a soak run's GL objects must stay constant after warm-up).
+/// A name generated but never bound is not yet an object (GL 3.3 core §2.5) and is not counted.
+/// Slow (a few hundred thousand queries): for tests and soak runs, never on the frame path.
+struct ObjectCensus {
+  int buffers = 0;
+  int vertexArrays = 0;  ///< of the current context (vertex arrays are not shared)
+  int textures = 0;
+  int framebuffers = 0;  ///< of the current context (not shared)
+  int renderbuffers = 0;
+  int queries = 0;
+  int programs = 0;
+  int shaders = 0;
+  int total() const {
+    return buffers + vertexArrays + textures + framebuffers + renderbuffers + queries + programs + shaders;
+  }
+  bool operator==(const ObjectCensus&) const = default;
+};
+ObjectCensus countLiveObjects(const GlApi& gl, GLuint maxName = 8192);
+
 extern template class Object<ObjectKind::Buffer>;
 extern template class Object<ObjectKind::VertexArray>;
 extern template class Object<ObjectKind::Texture>;
