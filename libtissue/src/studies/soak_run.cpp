@@ -32,6 +32,7 @@ Result<void> checkConfig(const SoakConfig& o) {
                  " must see every method once: give at least " +
                  std::to_string(o.methodEvery * long(kMethods.size())) + " (5 x --method-every)"};
   if (o.width < 16 || o.height < 16) return Error{"soak: --width and --height must be >= 16 pixels"};
+  if (o.mapSize < 64) return Error{"soak: --map-size must be >= 64 texels"};
   return {};
 }
 
@@ -64,7 +65,10 @@ Result<std::string> soakSession(const SoakConfig& o, const scene::SceneSettings&
   if (!context) return context.error();
   auto gl = gl::loadGl((*context)->procAddressFunction());
   if (!gl) return gl.error();
-  auto scene = detail::makeLoopScene(context->get(), settings);
+  scene::SceneSettings soakSettings = settings;
+  soakSettings.methods.mapSize = o.mapSize;
+  soakSettings.methods.lightmap.size = o.mapSize;
+  auto scene = detail::makeLoopScene(context->get(), soakSettings);
   if (!scene) return scene.error();
   if (auto added = scene->addOrgan({.scenario = session->scenario}); !added) return added.error();
   if (auto match = scene::checkSessionMatches(*session, *scene->loop(0)); !match) return match.error();

@@ -24,6 +24,7 @@ void registerSoakCommand(CLI::App& app, const GlobalOptions& global, int& exitCo
   cmd->add_option("--method-every", o->methodEvery, "frames per shading method (default 200; 0: lit only)");
   cmd->add_option("--width", o->width, "rendered width, pixels (default 96)")->check(CLI::Range(16, 8192));
   cmd->add_option("--height", o->height, "rendered height, pixels (default 72)")->check(CLI::Range(16, 8192));
+  cmd->add_option("--map-size", o->mapSize, "texture-space and parallax map texels a side (default 256)");
   cmd->callback([o, session, &global, &exitCode] {
     o->session =
         session->empty() ? dataDir() / "sessions" / "liver_poke_grasp.json" : std::filesystem::path(*session);
