@@ -39,6 +39,7 @@ Result<void> checkConfig(const SoakConfig& o) {
 struct Sample {
   long frame = 0;
   std::int64_t rssKb = 0;
+  std::int64_t heapKb = 0;
   gl::ObjectCensus objects;
 };
 
@@ -94,7 +95,8 @@ Result<std::string> soakSession(const SoakConfig& o, const scene::SceneSettings&
     divergences += f->simulation.divergenceEvents;
     nanFrames += f->simulation.finite ? 0 : 1;
     if ((i + 1) % o.sampleEvery == 0 || i + 1 == o.warmupFrames) {
-      samples.push_back({i + 1, residentSetKb().value_or(0), gl::countLiveObjects(**gl)});
+      samples.push_back(
+          {i + 1, residentSetKb().value_or(0), heapInUseKb().value_or(0), gl::countLiveObjects(**gl)});
       if (o.onProgress) {
         char line[160];
         std::snprintf(line, sizeof line, "soak: frame %ld of %ld, rss %lld kB, %d GL objects", i + 1,
@@ -112,7 +114,10 @@ Result<std::string> soakSession(const SoakConfig& o, const scene::SceneSettings&
   bool constant = true;
   nlohmann::json list = nlohmann::json::array();
   for (auto s = samples.begin(); s != samples.end(); ++s) {
-    list.push_back({{"frame", s->frame}, {"rss_kb", s->rssKb}, {"gl_objects", s->objects.total()}});
+    list.push_back({{"frame", s->frame},
+                    {"rss_kb", s->rssKb},
+                    {"heap_kb", s->heapKb},
+                    {"gl_objects", s->objects.total()}});
     if (s < base) continue;
     rssMax = std::max(rssMax, s->rssKb);
     glMin = std::min(glMin, s->objects.total());

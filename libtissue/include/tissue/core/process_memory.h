@@ -11,4 +11,10 @@ namespace tissue {
 /// size); none where the system does not say.
 std::optional<std::int64_t> residentSetKb();
 
+/// Bytes the C heap holds in allocations now, kB (glibc's mallinfo2 uordblks + hblkhd: every
+/// malloc of the process, the GL driver's included, not the pages the allocator keeps free nor
+/// JIT code); none without glibc. Flat heap under a growing RSS points at fragmentation or the
+/// driver's mappings rather than a leak.
+std::optional<std::int64_t> heapInUseKb();
+
 }  // namespace tissue

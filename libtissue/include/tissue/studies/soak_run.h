@@ -36,7 +36,8 @@ struct SoakConfig {
 /// its own headless context. Returns the report
 /// as a JSON object's text: session, frames, warmup_frames, method_every, width, height, frame_ms
 /// {median, p99, max}, rss_kb {after_warmup, end, max, growth}, gl_objects {after_warmup, end,
-/// min, max, by_kind}, samples [{frame, rss_kb, gl_objects}], divergence_events, nan_frames and
+/// min, max, by_kind}, heap_kb {after_warmup, end} (core/process_memory.h), samples [{frame,
+/// rss_kb, heap_kb, gl_objects}], divergence_events, nan_frames and
 /// the verdicts rss_ok (growth <= rssBudgetKb) and gl_ok (constant). Errors: bad counts (the
 /// warm-up must see every method once), a session of another mesh, a failed frame (named).
 Result<std::string> soakSession(const SoakConfig& config, const scene::SceneSettings& scene);
