@@ -10,6 +10,7 @@
 
 #include "tissue/context/headless_context.h"
 #include "tissue/core/atomic_file.h"
+#include "tissue/core/stopwatch.h"
 #include "tissue/mesh/deformable_surface.h"
 #include "tissue/scenario/scenario.h"
 
@@ -143,7 +144,7 @@ struct Scene::Impl {
   }
   /// The last frame's pass times as each organ's cost: a method's passes shared among its organs
   /// by their predicted costs.
-  void learnBudget() {
+  void learnBudget(double frameMs) {
     if (budgetMs <= 0.0 || !controller || !renderer || budgetChoices.size() != organs.size()) return;
     const render::RenderTimings& t = renderer->lastTimings();
     const std::vector<double> perMethod = methodPassMs(t);
@@ -161,7 +162,7 @@ struct Scene::Impl {
       const double share = predicted[m] > 0.0 ? p / predicted[m] : 1.0 / double(count[m]);
       samples.push_back({i, perMethod[m] * share});
     }
-    controller->observe(samples, t.totalCpuMs);
+    controller->observe(samples, frameMs);
   }
 
   Result<void> makeCurrent() {
@@ -315,6 +316,17 @@ Result<void> Scene::setMethod(OrganId id, render::ShadingMethod method) {
   if (!settings) return settings.error();
   (*o)->method = std::move(*settings);
   (*o)->budgetOption = -1;  // a budget's next choice replaces it
+  return {};
+}
+
+Result<void> Scene::setMethodOption(OrganId id, const quality::QualityOption& option) {
+  auto o = m_impl->organ(id);
+  if (!o) return o.error();
+  if (!m_impl->renderer) return Error{"setMethodOption: this scene has no renderer (SceneSettings::gl)"};
+  auto settings = methodOfOption(option, (*o)->assets, (*o)->textures, (*o)->choices);
+  if (!settings) return settings.error();
+  (*o)->method = std::move(*settings);
+  (*o)->budgetOption = -1;
   return {};
 }
 
@@ -508,6 +520,7 @@ Result<LoopFrame> Scene::advance(OrganId id, const InstrumentInput& input, Image
   }
   if (!s.renderer) return Error{"advance: this scene has no renderer to render with (SceneSettings::gl)"};
   if (width <= 0 || height <= 0) return Error{"advance: the image must be at least 1 x 1 pixels"};
+  const Stopwatch watch;
   if (auto up = upload(); !up) return up.error();  // the other organs' changes
   s.frame(float(width) / float(height));
   if (auto b = s.applyBudget(width, height); !b) return b.error();
@@ -515,7 +528,7 @@ Result<LoopFrame> Scene::advance(OrganId id, const InstrumentInput& input, Image
   const RenderRequest request{
       .scene = &s.scene, .width = width, .height = height, .image = image, .host = {}};
   auto frame = (*o)->loop->advance(input, &request);
-  if (frame) s.learnBudget();
+  if (frame) s.learnBudget(watch.elapsedMs());
   return frame;
 }
 
@@ -524,12 +537,13 @@ Result<void> Scene::render(const render::HostFramebuffer& target) {
   if (!s.renderer) return Error{"render: this scene has no renderer (SceneSettings::gl)"};
   if (target.width <= 0 || target.height <= 0)
     return Error{"render: the viewport must be at least 1 x 1 pixels"};
+  const Stopwatch watch;  // the frame as the host sees it: upload and render
   if (auto up = upload(); !up) return up.error();
   s.frame(float(target.width) / float(target.height));
   if (auto b = s.applyBudget(target.width, target.height); !b) return b.error();
   s.buildObjects();
   auto done = s.renderer->renderTo(s.scene, target);
-  if (done) s.learnBudget();
+  if (done) s.learnBudget(watch.elapsedMs());
   return done;
 }
 
@@ -537,12 +551,13 @@ Result<Image8> Scene::renderImage(int width, int height) {
   Impl& s = *m_impl;
   if (!s.renderer) return Error{"render: this scene has no renderer (SceneSettings::gl)"};
   if (width <= 0 || height <= 0) return Error{"render: the image must be at least 1 x 1 pixels"};
+  const Stopwatch watch;  // the frame as the host sees it: upload, render, read back
   if (auto up = upload(); !up) return up.error();
   s.frame(float(width) / float(height));
   if (auto b = s.applyBudget(width, height); !b) return b.error();
   s.buildObjects();
   auto image = s.renderer->renderImage(s.scene, width, height);
-  if (image) s.learnBudget();
+  if (image) s.learnBudget(watch.elapsedMs());
   return image;
 }
 

@@ -116,6 +116,10 @@ class Scene {
   Result<OrganId> addOrgan(const OrganDesc& organ);
   /// Switches an organ's method at run time; the error says which this organ offers.
   Result<void> setMethod(OrganId organ, render::ShadingMethod method);
+  /// Sets an organ's method and setting to a quality table option (quality/quality_table.h, the
+  /// atlas's names; "lit wrap" the fallback), as the controller would; the budget, when on,
+  /// replaces it at the next render.
+  Result<void> setMethodOption(OrganId organ, const quality::QualityOption& option);
   /// A static organ's shape as the host deforms it (its own simulator, a recorded state): one
   /// position per geometric vertex of its mesh (mm, object space); normals, planes and tangents
   /// follow, uploaded at the next render. A simulated organ's scenario moves it: an error.
