@@ -34,9 +34,12 @@ struct BudgetBenchConfig {
   /// ms: a fixed setting whose frame takes longer is dropped after that frame (it fits no budget
   /// here: texture space without culling draws five 1024^2 maps, about 0.5 s a frame on llvmpipe).
   double maxFixedFrameMs = 400.0;
-  double truthSeconds = 120.0;                         ///< s for the truth at most
-  int truthSpp = 4096;                                 ///< truth samples per pixel at most
-  int threads = 0;                                     ///< truth threads; 0: all cores
+  double truthSeconds = 120.0;  ///< s for the truth at most
+  int truthSpp = 4096;          ///< truth samples per pixel at most
+  int threads = 0;              ///< truth threads; 0: all cores
+  /// A file of the truth image, read when it is there (and of this size), else written: delete it
+  /// when the scene, the frames or the truth's settings change.
+  std::filesystem::path truthCache;
   std::function<void(const std::string&)> onProgress;  ///< one line per step; empty: none
 };
 
