@@ -159,6 +159,9 @@ TEST(QualityController, HysteresisHoldsThePlanUnderNoisyCosts) {
   const int settled = steady.plansChanged();
   runFrames(steady, objs, budget, 300, rng3, 1.04);
   EXPECT_EQ(steady.plansChanged(), settled);
+  // A new budget is planned for at once, hold or not.
+  const auto& loose = steady.update(objs, kScreenPx, 1000.0);
+  EXPECT_EQ(loose[0].setting, "50");
 }
 
 TEST(QualityController, LearnedCostConvergesToTheMeasuredCost) {

@@ -203,7 +203,9 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
                                                            double screenPx, double budgetMs) {
   const ControllerSettings& s = m_settings;
   const Plan best = choosePlan(m_table, m_costs, m_overheadMs, objects, screenPx, budgetMs, s);
-  bool replace = m_plan.option.size() != objects.size();
+  // A new budget or a new set of objects: the held plan was made for something else.
+  bool replace = m_plan.option.size() != objects.size() || budgetMs != m_budgetMs;
+  m_budgetMs = budgetMs;
   if (!replace) {
     // The held plan must still be allowed for each object (a footprint below the threshold
     // takes the fallback at once).

@@ -141,6 +141,7 @@ class QualityController {
   Plan m_plan;
   std::vector<ObjectView> m_lastObjects;
   std::vector<ObjectChoice> m_choices;
+  double m_budgetMs = 0.0;  ///< ms, of the last update
   int m_age = 0;
   int m_changes = 0;
 };
