@@ -96,6 +96,11 @@ PanelActions Panel::build(const PanelView& v) {
   ImGui::SameLine();
   ImGui::Text(v.grasped ? "holding %u" : "free", v.grasped);
   ImGui::Separator();
+  // The frame budget (issue 16): the quality controller picks method and setting under it.
+  float budget = v.budgetMs;
+  if (ImGui::SliderFloat("budget ms", &budget, 0.0f, 100.0f, budget > 0.0f ? "%.1f" : "off"))
+    a.budgetMs = budget;
+  if (!v.budgetChoice.empty()) ImGui::TextWrapped("chosen: %s", v.budgetChoice.c_str());
   methodSwitches(v, a);
   methodSettings(v, a);
   if (ImGui::CollapsingHeader("tissue")) {

@@ -43,6 +43,8 @@ struct PanelView {
   long frame = 0;
   bool recording = false;
   long recordedFrames = 0;
+  float budgetMs = 0.0f;     ///< ms, the frame budget (0: off)
+  std::string budgetChoice;  ///< what the quality controller chose (empty: off)
 };
 
 /// What the user did in the panel.
@@ -52,6 +54,7 @@ struct PanelActions {
   bool reset = false;                           ///< rebuild the loop from the scenario
   bool toggleGrasp = false;
   bool toggleRecord = false;
+  std::optional<float> budgetMs;  ///< ms, a new frame budget (0: off)
 };
 
 /// The panel on one window. Not copyable.

@@ -123,12 +123,21 @@ PanelView panelView(const Viewer& v, const FrameTimer& timer) {
   p.frame = v.loop->frame();
   p.recording = v.recorder.has_value();
   p.recordedFrames = v.recorder ? long(v.recorder->session().frames.size()) : 0;
+  p.budgetMs = float(v.budgetMs);
+  if (v.budgetChoice) {
+    char line[160];
+    std::snprintf(line, sizeof line, "%s %s%s, %.0f px, %s, %.1f ms", v.budgetChoice->method.c_str(),
+                  v.budgetChoice->setting.c_str(), v.budgetChoice->fallback ? " (fallback)" : "",
+                  v.budgetChoice->footprintPx, v.budgetChoice->view.c_str(), v.budgetChoice->predictedMs);
+    p.budgetChoice = line;
+  }
   return p;
 }
 
 /// What the panel asked for: method, settings, grasp, recording, reset.
 Result<void> applyPanel(Viewer& v, const PanelActions& a, scene::InstrumentInput& input) {
   if (a.method) v.method = *a.method;
+  if (a.budgetMs) v.budgetMs = double(*a.budgetMs);
   if (a.choices) {
     if (auto ok = rebuildMethods(v, *a.choices); !ok)
       v.methodError = ok.error().message;
@@ -203,6 +212,7 @@ Result<void> runFrames(Viewer& v, const ViewerOptions& options, FrameTimer& time
     scene::RenderRequest request;
     request.scene = &v.scene;
     request.host = render::HostFramebuffer{0, 0, 0, width, height};
+    if (auto ok = applyBudget(v, width, height); !ok) return ok;
     auto f = v.loop->advance(input, width > 0 && height > 0 ? &request : nullptr);  // minimised: no render
     if (!f) return Error{"frame " + std::to_string(frame) + ": " + f.error().message};
     v.last = *f;
@@ -210,6 +220,7 @@ Result<void> runFrames(Viewer& v, const ViewerOptions& options, FrameTimer& time
     timer.add(Phase::Mesh, f->ms.meshMs);
     timer.add(Phase::Upload, f->ms.uploadMs);
     timer.add(Phase::Render, f->ms.renderMs);
+    learnBudget(v, f->ms.uploadMs + f->ms.renderMs);
     if (v.panel) timer.time(Phase::Panel, [&] { v.panel->draw(); });
     if (frame + 1 == frames && !options.screenshot.empty()) {
       auto image = v.window->readBackBuffer();

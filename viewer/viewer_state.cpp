@@ -134,6 +134,41 @@ void applyMethod(Viewer& v) {
       m == render::ShadingMethod::Separable || m == render::ShadingMethod::TextureSpace;
 }
 
+Result<void> applyBudget(Viewer& v, int width, int height) {
+  if (v.budgetMs <= 0.0 || width <= 0 || height <= 0) {
+    v.budgetChoice.reset();
+    return {};
+  }
+  if (!v.controller) v.controller.emplace(quality::defaultQualityTable());
+  quality::ObjectView view = scene::organView(v.box, kIdentity4, v.scene.camera, width, height);
+  view.deforming = v.last.simulation.contacts > 0 || v.last.simulation.grasped > 0;
+  view.hasNormalMap = v.normalMapping && bool(v.textures.normalMap);
+  view.allowed = scene::offeredOptions(v.controller->table(), v.organ);
+  const quality::ObjectChoice& c =
+      v.controller->update({&view, 1}, double(width) * double(height), v.budgetMs)[0];
+  if (c.option != v.budgetOption) {
+    auto m = scene::methodOfOption(v.controller->table().options[std::size_t(c.option)], v.organ, v.textures,
+                                   v.choices);
+    if (!m) return m.error();
+    v.budgetMethod = std::move(*m);
+    v.budgetOption = c.option;
+  }
+  v.scene.objects[0].method = v.budgetMethod;
+  v.budgetChoice = scene::BudgetChoice{c.method,         c.setting,
+                                       view.footprintPx, c.predictedMs,
+                                       c.expectedRelRms, std::string(quality::viewClassFrame(c.view)),
+                                       c.fallback,       c.mesh};
+  return {};
+}
+
+void learnBudget(Viewer& v, double frameMs) {
+  if (!v.controller || !v.budgetChoice || !v.renderer) return;
+  const auto perMethod = scene::methodPassMs(v.renderer->lastTimings());
+  const auto m = std::size_t(render::shadingMethod(v.scene.objects[0].method));
+  const quality::CostSample sample{0, perMethod[m]};
+  v.controller->observe({&sample, 1}, frameMs);
+}
+
 Result<void> resetLoop(Viewer& v) {
   if (v.recorder)
     if (auto ok = toggleRecording(v); !ok) return ok;

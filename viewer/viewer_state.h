@@ -14,8 +14,10 @@
 #include "instrument_control.h"
 #include "orbit_camera.h"
 #include "panel.h"
+#include "tissue/quality/controller.h"
 #include "tissue/render/renderer.h"
 #include "tissue/scenario/scenario.h"
+#include "tissue/scene/budget.h"
 #include "tissue/scene/organ_assets.h"
 #include "tissue/scene/organ_loop.h"
 #include "tissue/scene/organ_methods.h"
@@ -59,7 +61,19 @@ struct Viewer {
   scene::LoopFrame last;  ///< the last frame's figures
   double maxForceN = 0.0;
   double fps = 0.0;
+  // The frame budget (issue 16): the quality controller chooses the organ's method and setting.
+  double budgetMs = 0.0;  ///< ms; 0: off (the panel's method)
+  std::optional<quality::QualityController> controller;
+  std::optional<scene::BudgetChoice> budgetChoice;  ///< the last frame's choice
+  int budgetOption = -1;                            ///< the table option of budgetMethod
+  render::MethodSettings budgetMethod;
 };
+
+/// With a budget: the controller's choice for this frame (camera, `width` x `height`) as the
+/// organ's method (after applyMethod). Errors when an option cannot be built.
+Result<void> applyBudget(Viewer& v, int width, int height);
+/// The last frame's measured passes (the organ's method's) and whole frame (ms) for the controller.
+void learnBudget(Viewer& v, double frameMs);
 
 /// Loads `scenarioFile` (tissue::scenario; meshes also from folders.shared/meshes; it must have an
 /// instrument) and its organ through scene::loadOrganAssets: the scenario's mesh, the material

@@ -33,7 +33,7 @@ static long covered_pixels(const char* png) {
 }
 
 int main(int argc, char** argv) {
-  char material[4096], scenario[4096];
+  char material[4096], scenario[4096], chosen[64];
   tissue_scene* scene = NULL;
   tissue_organ* liver = NULL;
   tissue_organ* none = NULL;
@@ -104,6 +104,19 @@ int main(int argc, char** argv) {
     fprintf(stderr, "c_host: an unknown method must fail\n");
     status = 1;
   }
+  /* 5 a frame budget (issue 16): refused when negative; under one the controller picks the
+   * liver's method and says which */
+  if (tissue_scene_set_budget_ms(scene, -1.0) == 0 || strstr(tissue_last_error(), "budget") == NULL) {
+    fprintf(stderr, "c_host: a negative budget must fail naming it; got '%s'\n", tissue_last_error());
+    status = 1;
+  }
+  if (tissue_scene_set_budget_ms(scene, 1000.0) != 0 ||
+      tissue_scene_render_png(scene, argv[2], 480, 360) != 0 ||
+      tissue_organ_chosen_method(liver, chosen, (int)sizeof chosen) != 0 || chosen[0] == '\0') {
+    status = failed("budget");
+    goto done;
+  }
+  printf("c_host: under a 1000 ms budget the controller draws the liver %s\n", chosen);
 done:
   tissue_scene_destroy(scene);
   return status;

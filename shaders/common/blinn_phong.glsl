@@ -22,3 +22,12 @@ float blinnPhongSpecular(vec3 N, vec3 L, vec3 V, float specular, float shininess
   float lobe = (shininess + 8.0) / (8.0 * 3.14159265) * pow(max(dot(N, H), 0.0), shininess);
   return specular * lobe * NdotL * 3.14159265;
 }
+
+// Blinn-Phong with wrap lighting (Green 2004, GPU Gems ch. 16): the diffuse is
+// max(0, (N.L + w) / (1 + w)), reaching past the terminator as scattered light does; the
+// specular keeps the plain N.L. w = 0 is blinnPhong().
+vec3 blinnPhongWrap(vec3 N, vec3 L, vec3 V, vec3 albedo, float specular, float shininess, float wrap) {
+  float NdotL = dot(N, L);
+  float wrapped = max((NdotL + wrap) / (1.0 + wrap), 0.0);
+  return albedo * wrapped + vec3(blinnPhongSpecular(N, L, V, specular, shininess));
+}

@@ -7,6 +7,8 @@
 #include "common/blinn_phong.glsl"
 #include "common/lights.glsl"
 
+uniform float u_wrap;  // LitSettings::wrap, 0: Lambert
+
 void main() {
   vec3 N = surfaceNormal();
   vec3 Ng = geometricNormal();
@@ -15,7 +17,7 @@ void main() {
   vec3 color = u_ambient * albedo;
   for (int i = 0; i < u_lightCount; ++i) {
     vec3 L = lightDirection(i, v_worldPosition);
-    color += blinnPhong(N, L, V, albedo, u_specular, u_shininess) * u_lightRadiance[i] *
+    color += blinnPhongWrap(N, L, V, albedo, u_specular, u_shininess, u_wrap) * u_lightRadiance[i] *
              shadowFactor(i, v_worldPosition, Ng);
   }
   o_radiance = vec4(color, 1.0);

@@ -53,6 +53,10 @@
 #include "tissue/truth/ray_mesh.h"
 #include "tissue/truth/slab_reference.h"
 
+// The quality controller: each object's method and setting under a frame budget.
+#include "tissue/quality/controller.h"
+#include "tissue/quality/quality_table.h"
+
 // Rendering: headless GL contexts (EGL, OSMesa), the renderer, its scene and shading methods.
 #include "tissue/context/gl_context.h"
 #include "tissue/context/headless_context.h"
@@ -65,6 +69,7 @@
 
 // The scene a host embeds (organs from mesh + material + scenario, the instrument, render into the
 // host framebuffer), its per-frame loop (simulate -> mesh -> upload -> render) and recorded sessions.
+#include "tissue/scene/budget.h"
 #include "tissue/scene/instrument_mesh.h"
 #include "tissue/scene/material_file.h"
 #include "tissue/scene/organ_assets.h"

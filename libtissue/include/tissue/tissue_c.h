@@ -83,6 +83,13 @@ TISSUE_C_API int tissue_scene_render(tissue_scene* scene, unsigned int framebuff
 /* share_depth: test against and write the host's depth (1, default) or ignore it (0);
  * clear: fill the viewport's background too (1) or not (0, default). */
 TISSUE_C_API int tissue_scene_set_host_depth(tissue_scene* scene, int share_depth, int clear);
+/* A frame budget, ms (>= 0; 0: off, the default): each render then lets the quality controller
+ * choose every organ's method and setting from its footprint, distance, view angle and motion so
+ * that the frame fits, learning the costs from the measured passes (issue 16). */
+TISSUE_C_API int tissue_scene_set_budget_ms(tissue_scene* scene, double budget_ms);
+/* What the controller chose for the organ at the last render, "<method> <setting>" (e.g.
+ * "lit wrap", "ray-march 10"), NUL-terminated into text (size bytes); "" while the budget is off. */
+TISSUE_C_API int tissue_organ_chosen_method(const tissue_organ* organ, char* text, int size);
 /* Renders into the scene's own target and writes a PNG (atomically). */
 TISSUE_C_API int tissue_scene_render_png(tissue_scene* scene, const char* path, int width, int height);
 

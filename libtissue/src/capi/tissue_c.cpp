@@ -118,6 +118,31 @@ int tissue_organ_set_method(tissue_organ* organ, const char* method) {
   });
 }
 
+int tissue_scene_set_budget_ms(tissue_scene* scene, double budget_ms) {
+  return guarded("tissue_scene_set_budget_ms", [&] {
+    if (!scene) return fail(TISSUE_ERROR_ARGUMENT, "tissue_scene_set_budget_ms: scene is NULL");
+    auto r = scene->scene->setBudgetMs(budget_ms);
+    return r ? TISSUE_OK : fail(TISSUE_ERROR_ARGUMENT, "tissue_scene_set_budget_ms: " + r.error().message);
+  });
+}
+
+int tissue_organ_chosen_method(const tissue_organ* organ, char* text, int size) {
+  return guarded("tissue_organ_chosen_method", [&] {
+    if (!organ || !text || size <= 0)
+      return fail(TISSUE_ERROR_ARGUMENT, "tissue_organ_chosen_method: organ or text is NULL, or size <= 0");
+    const auto& choices = organ->scene->scene->budgetChoices();
+    const std::string chosen = organ->id < choices.size()
+                                   ? choices[organ->id].method + " " + choices[organ->id].setting
+                                   : std::string();
+    if (chosen.size() + 1 > std::size_t(size))
+      return fail(TISSUE_ERROR_ARGUMENT, "tissue_organ_chosen_method: give at least " +
+                                             std::to_string(chosen.size() + 1) + " bytes");
+    std::copy(chosen.begin(), chosen.end(), text);
+    text[chosen.size()] = '\0';
+    return TISSUE_OK;
+  });
+}
+
 int tissue_organ_set_transform(tissue_organ* organ, const float model[16]) {
   return guarded("tissue_organ_set_transform", [&] {
     if (!organ || !model)

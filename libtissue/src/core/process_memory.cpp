@@ -28,4 +28,10 @@ std::optional<std::int64_t> heapInUseKb() {
 #endif
 }
 
+void releaseFreeHeap() {
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+}
+
 }  // namespace tissue

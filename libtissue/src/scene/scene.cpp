@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
 #include <utility>
 
 #include "tissue/context/headless_context.h"
 #include "tissue/core/atomic_file.h"
+#include "tissue/core/stopwatch.h"
 #include "tissue/mesh/deformable_surface.h"
 #include "tissue/scenario/scenario.h"
 
@@ -73,6 +75,11 @@ struct Scene::Impl {
     double pendingS = 0.0;                         ///< s, time not yet simulated
     bool changed = false;                          ///< stepped since the last upload
     bool openSurface = false;                      ///< the surface has boundary edges: drawn double-sided
+    bool moved = false;                            ///< changed at the last upload (deforming)
+    double importance = 1.0;                       ///< OrganDesc::importance
+    int budgetOption = -1;                         ///< the quality table option it has; -1: its own method
+    std::map<int, render::MethodSettings> optionSettings;  ///< built once per option
+    std::vector<int> offered;                              ///< table options its material offers
   };
   std::vector<Organ> organs;
 
@@ -86,6 +93,77 @@ struct Scene::Impl {
   std::optional<bool> pendingGrasp;
   Float3 forceN{};
   bool instrumentVisible = true;
+
+  double budgetMs = 0.0;
+  std::optional<quality::QualityController> controller;
+  std::vector<BudgetChoice> budgetChoices;
+
+  /// The controller's choice for this frame (after frame()), as each organ's method.
+  Result<void> applyBudget(int width, int height) {
+    if (budgetMs <= 0.0 || !renderer || organs.empty()) return {};
+    if (!controller) {
+      quality::QualityTable table = quality::defaultQualityTable();
+      if (!settings.qualityTable.empty()) {
+        auto loaded = quality::loadQualityTable(settings.qualityTable);
+        if (!loaded) return loaded.error();
+        table = std::move(*loaded);
+      }
+      if (table.options.empty()) return Error{"budget: the quality table has no options"};
+      controller.emplace(std::move(table), settings.quality);
+    }
+    const quality::QualityTable& table = controller->table();
+    std::vector<quality::ObjectView> views;
+    for (Organ& o : organs) {
+      if (o.offered.empty()) o.offered = offeredOptions(table, o.assets);
+      quality::ObjectView v = organView(o.assets.bounds, o.model, lastCamera, width, height);
+      v.deforming = o.moved;
+      v.importance = o.importance;
+      v.hasNormalMap = bool(o.textures.normalMap);
+      v.allowed = o.offered;
+      views.push_back(std::move(v));
+    }
+    const auto& chosen = controller->update(views, double(width) * double(height), budgetMs);
+    budgetChoices.clear();
+    for (std::size_t i = 0; i < organs.size(); ++i) {
+      Organ& o = organs[i];
+      const quality::ObjectChoice& c = chosen[i];
+      if (c.option != o.budgetOption) {
+        auto it = o.optionSettings.find(c.option);
+        if (it == o.optionSettings.end()) {
+          auto m = methodOfOption(table.options[std::size_t(c.option)], o.assets, o.textures, o.choices);
+          if (!m) return Error{"budget: organ " + std::to_string(i) + ": " + m.error().message};
+          it = o.optionSettings.emplace(c.option, std::move(*m)).first;
+        }
+        o.method = it->second;
+        o.budgetOption = c.option;
+      }
+      budgetChoices.push_back({c.method, c.setting, views[i].footprintPx, c.predictedMs, c.expectedRelRms,
+                               std::string(quality::viewClassFrame(c.view)), c.fallback, c.mesh});
+    }
+    return {};
+  }
+  /// The last frame's pass times as each organ's cost: a method's passes shared among its organs
+  /// by their predicted costs.
+  void learnBudget(double frameMs) {
+    if (budgetMs <= 0.0 || !controller || !renderer || budgetChoices.size() != organs.size()) return;
+    const render::RenderTimings& t = renderer->lastTimings();
+    const std::vector<double> perMethod = methodPassMs(t);
+    std::vector<double> predicted(perMethod.size(), 0.0);
+    std::vector<int> count(perMethod.size(), 0);
+    for (const Organ& o : organs) {
+      const auto m = std::size_t(render::shadingMethod(o.method));
+      predicted[m] += controller->choices()[std::size_t(&o - organs.data())].predictedMs;
+      ++count[m];
+    }
+    std::vector<quality::CostSample> samples;
+    for (std::size_t i = 0; i < organs.size(); ++i) {
+      const auto m = std::size_t(render::shadingMethod(organs[i].method));
+      const double p = controller->choices()[i].predictedMs;
+      const double share = predicted[m] > 0.0 ? p / predicted[m] : 1.0 / double(count[m]);
+      samples.push_back({i, perMethod[m] * share});
+    }
+    controller->observe(samples, frameMs);
+  }
 
   Result<void> makeCurrent() {
     if (ownContext) return ownContext->makeCurrent();
@@ -202,6 +280,7 @@ Result<OrganId> Scene::addOrgan(const OrganDesc& desc) {
     organ.still.emplace(std::move(*still));
   }
   organ.choices = desc.methods.value_or(s.settings.methods);
+  organ.importance = std::max(0.0, desc.importance);
   // An open surface (a patch, a cut organ) must not vanish when seen from behind (issue 14).
   organ.openSurface = !(organ.loop ? organ.loop->surface() : *organ.still).boundaryVertices().empty();
   if (!s.renderer) {  // simulation only
@@ -236,6 +315,18 @@ Result<void> Scene::setMethod(OrganId id, render::ShadingMethod method) {
   auto settings = organMethod(method, (*o)->assets, (*o)->textures, (*o)->choices);
   if (!settings) return settings.error();
   (*o)->method = std::move(*settings);
+  (*o)->budgetOption = -1;  // a budget's next choice replaces it
+  return {};
+}
+
+Result<void> Scene::setMethodOption(OrganId id, const quality::QualityOption& option) {
+  auto o = m_impl->organ(id);
+  if (!o) return o.error();
+  if (!m_impl->renderer) return Error{"setMethodOption: this scene has no renderer (SceneSettings::gl)"};
+  auto settings = methodOfOption(option, (*o)->assets, (*o)->textures, (*o)->choices);
+  if (!settings) return settings.error();
+  (*o)->method = std::move(*settings);
+  (*o)->budgetOption = -1;
   return {};
 }
 
@@ -309,6 +400,24 @@ render::Scene& Scene::renderScene() {
   m_impl->lightsFollowFraming = false;
   return m_impl->scene;
 }
+Result<void> Scene::setBudgetMs(double budgetMs) {
+  if (!(budgetMs >= 0.0) || !std::isfinite(budgetMs))
+    return Error{"budget: give a finite frame budget in ms >= 0 (0: off)"};
+  if (budgetMs > 0.0 && !m_impl->renderer)
+    return Error{"budget: this scene has no renderer (SceneSettings::gl)"};
+  m_impl->budgetMs = budgetMs;
+  if (budgetMs == 0.0) m_impl->budgetChoices.clear();
+  return {};
+}
+double Scene::budgetMs() const {
+  return m_impl->budgetMs;
+}
+const std::vector<BudgetChoice>& Scene::budgetChoices() const {
+  return m_impl->budgetChoices;
+}
+const quality::QualityController* Scene::qualityController() const {
+  return m_impl->controller ? &*m_impl->controller : nullptr;
+}
 render::Renderer& Scene::renderer() {
   return *m_impl->renderer;
 }
@@ -377,6 +486,7 @@ Result<void> Scene::upload() {
   if (!s.renderer) return {};  // simulation only: nothing to upload
   if (auto current = s.makeCurrent(); !current) return current.error();
   for (Impl::Organ& o : s.organs) {
+    o.moved = o.changed;
     if (!o.changed) continue;
     if (o.loop) {
       auto uploaded = o.loop->upload();
@@ -410,12 +520,16 @@ Result<LoopFrame> Scene::advance(OrganId id, const InstrumentInput& input, Image
   }
   if (!s.renderer) return Error{"advance: this scene has no renderer to render with (SceneSettings::gl)"};
   if (width <= 0 || height <= 0) return Error{"advance: the image must be at least 1 x 1 pixels"};
+  const Stopwatch watch;
   if (auto up = upload(); !up) return up.error();  // the other organs' changes
   s.frame(float(width) / float(height));
+  if (auto b = s.applyBudget(width, height); !b) return b.error();
   s.buildObjects();
   const RenderRequest request{
       .scene = &s.scene, .width = width, .height = height, .image = image, .host = {}};
-  return (*o)->loop->advance(input, &request);
+  auto frame = (*o)->loop->advance(input, &request);
+  if (frame) s.learnBudget(watch.elapsedMs());
+  return frame;
 }
 
 Result<void> Scene::render(const render::HostFramebuffer& target) {
@@ -423,20 +537,28 @@ Result<void> Scene::render(const render::HostFramebuffer& target) {
   if (!s.renderer) return Error{"render: this scene has no renderer (SceneSettings::gl)"};
   if (target.width <= 0 || target.height <= 0)
     return Error{"render: the viewport must be at least 1 x 1 pixels"};
+  const Stopwatch watch;  // the frame as the host sees it: upload and render
   if (auto up = upload(); !up) return up.error();
   s.frame(float(target.width) / float(target.height));
+  if (auto b = s.applyBudget(target.width, target.height); !b) return b.error();
   s.buildObjects();
-  return s.renderer->renderTo(s.scene, target);
+  auto done = s.renderer->renderTo(s.scene, target);
+  if (done) s.learnBudget(watch.elapsedMs());
+  return done;
 }
 
 Result<Image8> Scene::renderImage(int width, int height) {
   Impl& s = *m_impl;
   if (!s.renderer) return Error{"render: this scene has no renderer (SceneSettings::gl)"};
   if (width <= 0 || height <= 0) return Error{"render: the image must be at least 1 x 1 pixels"};
+  const Stopwatch watch;  // the frame as the host sees it: upload, render, read back
   if (auto up = upload(); !up) return up.error();
   s.frame(float(width) / float(height));
+  if (auto b = s.applyBudget(width, height); !b) return b.error();
   s.buildObjects();
-  return s.renderer->renderImage(s.scene, width, height);
+  auto image = s.renderer->renderImage(s.scene, width, height);
+  if (image) s.learnBudget(watch.elapsedMs());
+  return image;
 }
 
 Result<void> Scene::renderPng(const std::filesystem::path& png, int width, int height) {

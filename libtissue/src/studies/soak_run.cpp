@@ -95,6 +95,7 @@ Result<std::string> soakSession(const SoakConfig& o, const scene::SceneSettings&
     divergences += f->simulation.divergenceEvents;
     nanFrames += f->simulation.finite ? 0 : 1;
     if ((i + 1) % o.sampleEvery == 0 || i + 1 == o.warmupFrames) {
+      releaseFreeHeap();  // the resident set of what is held, not the allocator's high-water mark
       samples.push_back(
           {i + 1, residentSetKb().value_or(0), heapInUseKb().value_or(0), gl::countLiveObjects(**gl)});
       if (o.onProgress) {

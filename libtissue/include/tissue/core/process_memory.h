@@ -17,4 +17,9 @@ std::optional<std::int64_t> residentSetKb();
 /// driver's mappings rather than a leak.
 std::optional<std::int64_t> heapInUseKb();
 
+/// Hands the C heap's free pages back to the system (glibc's malloc_trim(0); nothing elsewhere),
+/// so that a resident-set sample taken next counts what is held, not the allocator's high-water
+/// mark after a transient peak. For soak and benchmark harnesses, never on a host's frame path.
+void releaseFreeHeap();
+
 }  // namespace tissue

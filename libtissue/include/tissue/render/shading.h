@@ -20,7 +20,12 @@ namespace tissue::render {
 enum class ShadingMethod { Lit, Separable, TextureSpace, RayMarch, Parallax };
 
 /// Blinn-Phong through the normal map, straight into the HDR target. No subsurface scattering.
-struct LitSettings {};
+struct LitSettings {
+  /// Wrap lighting, unitless 0..1: the diffuse term max(0, (N.L + wrap) / (1 + wrap)) instead of
+  /// max(0, N.L) (Green 2004, GPU Gems ch. 16: the cheapest stand-in for light scattered past the
+  /// terminator; Unreal Substrate's Wrap tier for distant subsurface objects). 0: plain Lambert.
+  float wrap = 0.0f;
+};
 
 /// One component a_r of a separable kernel (Freude eq. 5.10): the diffuse is blurred
 /// horizontally, then vertically, with the same taps, and the result is multiplied by `sign`.

@@ -25,9 +25,11 @@
 #include "tissue/core/result.h"
 #include "tissue/core/vec_math.h"
 #include "tissue/gl/proc_address.h"
+#include "tissue/quality/controller.h"
 #include "tissue/render/renderer.h"
 #include "tissue/render/scene.h"
 #include "tissue/scenario/scenario.h"
+#include "tissue/scene/budget.h"
 #include "tissue/scene/organ_assets.h"
 #include "tissue/scene/organ_loop.h"
 #include "tissue/scene/organ_methods.h"
@@ -43,6 +45,7 @@ struct OrganDesc {
   render::ShadingMethod method = render::ShadingMethod::Lit;
   float meshScaleToMm = 1.0f;  ///< mm per file unit of a static organ's mesh (a scenario states its own)
   std::optional<MethodChoices> methods{};  ///< this organ's kernel, taps, ...; empty: SceneSettings::methods
+  double importance = 1.0;  ///< >= 0, its weight in the quality controller's error (Scene::setBudgetMs)
 };
 
 /// Settings of a scene (plain struct with defaults).
@@ -63,6 +66,10 @@ struct SceneSettings {
   /// step(dt) runs at most this many scenario frames (a host that stalls does not make the next
   /// frame slower still); the time beyond is dropped and counted in StepReport::droppedS.
   int maxFramesPerStep = 4;
+  /// The quality controller under Scene::setBudgetMs: footprint threshold, hysteresis, learning.
+  quality::ControllerSettings quality;
+  /// Its table: an atlas's JSON (tissue-sim atlas --json); empty: quality::defaultQualityTable().
+  std::filesystem::path qualityTable;
 };
 
 /// The instrument as a host moves it (world space).
@@ -109,6 +116,10 @@ class Scene {
   Result<OrganId> addOrgan(const OrganDesc& organ);
   /// Switches an organ's method at run time; the error says which this organ offers.
   Result<void> setMethod(OrganId organ, render::ShadingMethod method);
+  /// Sets an organ's method and setting to a quality table option (quality/quality_table.h, the
+  /// atlas's names; "lit wrap" the fallback), as the controller would; the budget, when on,
+  /// replaces it at the next render.
+  Result<void> setMethodOption(OrganId organ, const quality::QualityOption& option);
   /// A static organ's shape as the host deforms it (its own simulator, a recorded state): one
   /// position per geometric vertex of its mesh (mm, object space); normals, planes and tangents
   /// follow, uploaded at the next render. A simulated organ's scenario moves it: an error.
@@ -165,6 +176,18 @@ class Scene {
   Result<Image8> renderImage(int width, int height);
   /// renderImage, written as PNG atomically.
   Result<void> renderPng(const std::filesystem::path& png, int width, int height);
+
+  /// A frame budget (ms, >= 0; 0: off, the organs keep the methods they have): each render*()
+  /// then lets the quality controller (quality/controller.h) choose every organ's method and
+  /// setting from its projected footprint, distance, view angle and motion, under the budget, and
+  /// learns the costs from the renderer's measured pass times (on lazy rasterisers such as
+  /// llvmpipe only with RendererSettings::finishPasses). The instruments count as overhead.
+  Result<void> setBudgetMs(double budgetMs);
+  double budgetMs() const;
+  /// Per organ, what the controller chose at the last render (empty while the budget is off).
+  const std::vector<BudgetChoice>& budgetChoices() const;
+  /// The controller (its table, learned costs, plan); nullptr until a budget is set.
+  const quality::QualityController* qualityController() const;
 
   /// The renderer (context current for its calls), e.g. for its last timings; SceneSettings::gl only.
   render::Renderer& renderer();

@@ -3,9 +3,10 @@
 /// The soak run (issue 14, item 5): a recorded session replayed over and over, each frame one
 /// pass of the trainee's loop (simulate, mesh, upload, render, read back), the shading method
 /// switched in turn through all five, for as many frames as asked (100,000 by default). After the
-/// warm-up the process's resident memory may grow by at most 1 MB and the GL objects alive in
-/// the context (counted by asking GL, gl::countLiveObjects) must stay the same. A benchmark-style
-/// run, not a test: tissue-sim soak parses, calls and prints.
+/// warm-up the process's resident memory (sampled after core/process_memory.h's releaseFreeHeap,
+/// so that a transient heap peak's pages the allocator keeps do not count) may grow by at most 1 MB and the
+/// GL objects alive in the context (counted by asking GL, gl::countLiveObjects) must stay the same. A
+/// benchmark-style run, not a test: tissue-sim soak parses, calls and prints.
 
 #include <filesystem>
 #include <functional>

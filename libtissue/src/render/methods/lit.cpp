@@ -1,5 +1,7 @@
 #include "lit.h"
 
+#include <variant>
+
 namespace tissue::render {
 
 Result<LitMethod> LitMethod::create(const gl::GlApi& gl, const gl::ShaderLibrary& library) {
@@ -19,6 +21,8 @@ Result<void> LitMethod::draw(const FrameContext& frame, std::span<const ObjectDr
         if (m_programs.pick(d) != program) continue;
         if (!framed) setFrameUniforms(frame, program);
         framed = true;
+        const auto* lit = std::get_if<LitSettings>(&d.object->method);
+        frame.gl.Uniform1f(frame.gl.GetUniformLocation(program, "u_wrap"), lit ? lit->wrap : 0.0f);
         drawSurface(frame, program, d);
       }
     }

@@ -1,0 +1,149 @@
+#pragma once
+/// \file
+/// The quality controller (issue 16): under a frame budget (ms) it picks for each object the
+/// method and setting (a QualityTable option) with the lowest expected error whose predicted
+/// cost fits. The frame's expected error is the footprint- and importance-weighted sum of the
+/// objects' squared errors (the frame's relative RMS over its organ pixels, squared); the costs
+/// are a fixed part plus a part per covered pixel, learned online from measured pass times (an
+/// exponential moving average of the least-squares normal equations). The choice is exact (a
+/// multiple-choice knapsack by dynamic programming over costs rounded up to a grid), so it fits
+/// and more budget never gives a higher expected error. Objects below a footprint fall back to
+/// lit with a wrap term (Unreal Substrate's Wrap tier). GL-free. Units: ms, px, mm, degrees.
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "tissue/quality/quality_table.h"
+
+namespace tissue::quality {
+
+/// One object as the controller sees it this frame.
+struct ObjectView {
+  double footprintPx = 0.0;   ///< px covered on screen (projected bounds; 0: off screen)
+  double distanceMm = 0.0;    ///< mm from the eye to the object's centre
+  double viewAngleDeg = 0.0;  ///< degrees between the view ray and the object's surface normal (90: edge-on)
+  bool deforming = false;     ///< moved since the last frame (simulated, poked)
+  double importance = 1.0;    ///< >= 0, the host's weight (0: any error will do)
+  bool hasNormalMap = false;  ///< for the mesh work (tangents)
+  /// Table option indices this object may use (its material offers the method); empty: all.
+  std::vector<int> allowed;
+};
+
+/// The controller's settings (plain struct with defaults).
+struct ControllerSettings {
+  double minFootprintPx = 400.0;     ///< px; below: lit with wrap (about 20 x 20 pixels)
+  double closeUpFraction = 0.25;     ///< of the screen's pixels covered: the close-up class
+  double closeUpDistanceMm = 0.0;    ///< mm; nearer than this is close-up too (0: off)
+  double grazingDeg = 72.0;          ///< degrees; a view angle above it is the grazing class
+  double headroom = 0.05;            ///< plan to budget x (1 - headroom): measurement noise
+  double costGridMs = 0.02;          ///< ms, the knapsack's cost resolution (costs round up)
+  int holdFrames = 30;               ///< a new plan at most every N frames (hysteresis)
+  double gainMargin = 0.1;           ///< a new plan only if its expected error is this much lower
+  double overBudgetTolerance = 0.1;  ///< the held plan is dropped at once above budget x (1 + this)
+  double learningRate = 0.1;         ///< EMA weight of one measured sample (0..1]
+  std::string wrapMethod = "lit";    ///< the fallback's method
+  std::string wrapSetting = std::string(kWrapSetting);
+};
+
+/// Which mesh work an object's method needs each frame.
+struct MeshWork {
+  bool planes = false;    ///< local planes re-fitted (only the ray march reads them)
+  bool tangents = false;  ///< tangent frames (a normal map, the ray march's and parallax's tangent space)
+};
+/// The mesh work of `method` ("lit", "separable", "texture-space", "ray-march", "parallax").
+MeshWork meshWorkOf(std::string_view method, bool hasNormalMap);
+
+/// A learned cost: ms = fixedMs + msPerPx * px, with the EMA'd normal equations behind it.
+struct CostModel {
+  double fixedMs = 0.0;  ///< ms
+  double msPerPx = 0.0;  ///< ms per covered pixel
+  // Exponentially weighted sums of 1, px, px^2, ms, px ms (the normal equations).
+  double w = 0.0, wx = 0.0, wxx = 0.0, wy = 0.0, wxy = 0.0;
+  double priorFixedMs = 0.0, priorMsPerPx = 0.0;  ///< the shape kept while px hardly varies
+  int samples = 0;
+  double predictMs(double px) const { return fixedMs + msPerPx * px; }
+};
+/// A cost model starting at the table's prior.
+CostModel costModelOf(const QualityOption& option);
+/// One measured sample: `ms` spent on an object of `px` covered pixels. The fit is the
+/// exponentially weighted least squares of (1, px) -> ms; while the samples' px hardly vary it
+/// keeps the prior's shape and scales it to the measured level.
+void observeCost(CostModel& model, double px, double ms, double learningRate);
+
+/// The atlas frame `view` resembles under `settings`, for a screen of `screenPx` pixels.
+ViewClass viewClassOf(const ObjectView& view, double screenPx, const ControllerSettings& settings = {});
+
+/// A plan: one option per object.
+struct Plan {
+  std::vector<int> option;     ///< per object, table index
+  double predictedMs = 0.0;    ///< ms, frame overhead + the objects' predicted costs
+  double expectedError = 0.0;  ///< sqrt(sum w_i e_i^2 / sum w_i), w = importance x footprint
+  bool fits = true;            ///< predictedMs <= the planned budget (false: the cheapest plan)
+};
+
+/// The plan of least expected error whose predicted cost fits `budgetMs` (x (1 - headroom)),
+/// with costs `costs` (one per table option) and `overheadMs` of the frame; objects below the
+/// footprint threshold take the wrap option. When nothing fits: each object's cheapest option,
+/// fits = false.
+Plan choosePlan(const QualityTable& table, std::span<const CostModel> costs, double overheadMs,
+                std::span<const ObjectView> objects, double screenPx, double budgetMs,
+                const ControllerSettings& settings = {});
+
+/// `plan`'s predicted cost and expected error, recomputed for `objects` (for a held plan).
+Plan evaluatePlan(const QualityTable& table, std::span<const CostModel> costs, double overheadMs,
+                  std::span<const ObjectView> objects, double screenPx, std::vector<int> option,
+                  double budgetMs, const ControllerSettings& settings = {});
+
+/// What the controller chose for one object.
+struct ObjectChoice {
+  int option = -1;  ///< table index
+  std::string method, setting;
+  double predictedMs = 0.0;  ///< ms
+  double expectedRelRms = 0.0;
+  ViewClass view = ViewClass::Rest;
+  bool fallback = false;  ///< below the footprint threshold
+  MeshWork mesh;
+};
+
+/// One object's measured cost this frame.
+struct CostSample {
+  std::size_t object = 0;  ///< index in the last update's objects
+  double ms = 0.0;         ///< ms spent on it (its share of its method's passes)
+};
+
+/// The stateful controller: the learned costs, the held plan and its age.
+class QualityController {
+ public:
+  explicit QualityController(QualityTable table, ControllerSettings settings = {});
+
+  /// This frame's choice for `objects` under `budgetMs` (> 0) on a screen of `screenPx` pixels.
+  const std::vector<ObjectChoice>& update(std::span<const ObjectView> objects, double screenPx,
+                                          double budgetMs);
+  /// The measured costs of the frame that used the last update's choice: each object's share of
+  /// its passes, and the whole frame (ms), whose rest is the overhead.
+  void observe(std::span<const CostSample> samples, double frameMs);
+
+  const std::vector<ObjectChoice>& choices() const { return m_choices; }
+  const Plan& plan() const { return m_plan; }
+  const QualityTable& table() const { return m_table; }
+  std::span<const CostModel> costs() const { return m_costs; }
+  double overheadMs() const { return m_overheadMs; }
+  int plansChanged() const { return m_changes; }  ///< how often the plan changed
+  const ControllerSettings& settings() const { return m_settings; }
+
+ private:
+  QualityTable m_table;
+  ControllerSettings m_settings;
+  std::vector<CostModel> m_costs;
+  double m_overheadMs = 0.0;
+  Plan m_plan;
+  std::vector<ObjectView> m_lastObjects;
+  std::vector<ObjectChoice> m_choices;
+  double m_budgetMs = 0.0;  ///< ms, of the last update
+  int m_age = 0;
+  int m_changes = 0;
+};
+
+}  // namespace tissue::quality

@@ -1,0 +1,67 @@
+#pragma once
+/// \file
+/// The quality controller's table (issue 16): every method and setting of the speed-accuracy
+/// atlas (issue 13, studies/atlas.h) with its error against the path-traced truth per kind of
+/// view, and a prior of its cost (a fixed part and a part per covered pixel), read from the
+/// atlas's JSON (`tissue-sim atlas --json`: `results` [{method, setting, frame, ms, rel_rms,
+/// rel_rms_debiased}], `truth.frames` [{frame, organ_pixels}]). GL-free; the scene maps the
+/// names to the renderer's settings. Units: ms, px (pixels covered).
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tissue/core/result.h"
+
+namespace tissue::quality {
+
+/// The atlas frame an object's view resembles (studies/atlas.h frames; backlit is not used: the
+/// controller does not know where the lights are).
+enum class ViewClass { Rest, Deforming, CloseUp, Grazing };
+inline constexpr std::size_t kViewClassCount = 4;
+/// The atlas frame's name: "rest", "poked", "close-up", "grazing".
+std::string_view viewClassFrame(ViewClass view);
+
+/// The setting name of the fallback: lit with a wrap term (Unreal Substrate's Wrap tier).
+inline constexpr std::string_view kWrapSetting = "wrap";
+
+/// One method and setting.
+struct QualityOption {
+  std::string method;   ///< lit, separable, texture-space, ray-march, parallax
+  std::string setting;  ///< the atlas's setting name ("preintegrated-17", "6g-opt", "50", ...; "wrap")
+  /// Expected relative RMS error against the truth per ViewClass (the atlas's debiased rel RMS
+  /// when the JSON has it); a class the atlas lacks takes the mean of the others.
+  std::array<double, kViewClassCount> relRms{};
+  double fixedMs = 0.0;  ///< ms, the cost prior's part per object
+  double msPerPx = 0.0;  ///< ms per covered pixel, the cost prior's part per pixel
+};
+
+/// The options and where they came from.
+struct QualityTable {
+  std::vector<QualityOption> options;
+  /// ms, the atlas frame's cost that no method pays (clear, tone map, read back): the lit
+  /// row's intercept, which the options' fixedMs are measured above.
+  double frameOverheadMs = 0.0;
+  std::string source;  ///< what it was read from, for reports
+  /// The option named (method, setting), or -1.
+  int find(std::string_view method, std::string_view setting) const;
+};
+
+/// How an atlas becomes a table (plain struct with defaults).
+struct TableSettings {
+  bool debiased = true;  ///< use rel_rms_debiased (the truth's noise taken out) where given
+  bool addWrap = true;   ///< add lit "wrap" (the atlas has no row for it: lit's errors, lit's cost)
+};
+
+/// The table from an atlas's JSON text. Errors name the missing key.
+Result<QualityTable> qualityTableFromAtlasJson(std::string_view jsonText, const TableSettings& settings = {});
+/// The same from a file (an atlas.json); errors name the file.
+Result<QualityTable> loadQualityTable(const std::filesystem::path& atlasJson,
+                                      const TableSettings& settings = {});
+/// The committed default, data/quality/default_atlas.json (embedded at build time; its
+/// README says which command produced it).
+const QualityTable& defaultQualityTable();
+
+}  // namespace tissue::quality

@@ -1,0 +1,61 @@
+#pragma once
+/// \file
+/// The scene's side of the quality controller (issue 16, quality/controller.h): an organ's view
+/// as the controller sees it (the projected footprint of its bounds, distance, view angle), the
+/// table options its material offers, and an option as the renderer's method settings. Used by
+/// Scene::setBudgetMs and the budget bench. GL: methodOfOption reads the organ's textures.
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "tissue/core/result.h"
+#include "tissue/core/vec_math.h"
+#include "tissue/quality/controller.h"
+#include "tissue/quality/quality_table.h"
+#include "tissue/render/renderer.h"
+#include "tissue/render/scene.h"
+#include "tissue/scene/organ_assets.h"
+#include "tissue/scene/organ_methods.h"
+
+namespace tissue::scene {
+
+/// The wrap term of the lit fallback (LitSettings::wrap, unitless): Green 2004's half wrap.
+inline constexpr float kFallbackWrap = 0.5f;
+
+/// The view of an organ with object bounds `objectBounds` under `model` from `camera` on a
+/// `width` x `height` image: the pixels its bounds' projection covers (the rectangle of the
+/// eight corners, clipped to the image, times pi / 4 for the ellipse inside it; a box through
+/// the near plane covers the image), the distance to its centre (mm) and the angle between the
+/// view ray and its thinnest axis (degrees, 90: edge-on).
+quality::ObjectView organView(const Bounds3& objectBounds, const Mat4& model, const render::Camera& camera,
+                              int width, int height);
+
+/// The options of `table` whose method `organ` offers (offeredMethods).
+std::vector<int> offeredOptions(const quality::QualityTable& table, const OrganAssets& organ);
+
+/// The choices behind an option's setting name (the atlas's names: "preintegrated-17", "6g-opt",
+/// "6g-plain", "50", "adaptive-100", "default", "wrap"), over `base`.
+Result<MethodChoices> choicesOfSetting(const quality::QualityOption& option, const MethodChoices& base);
+
+/// The option as the renderer's settings for `organ` (the lit fallback with kFallbackWrap).
+Result<render::MethodSettings> methodOfOption(const quality::QualityOption& option, const OrganAssets& organ,
+                                              const OrganTextures& textures, const MethodChoices& base);
+
+/// ms of the last frame per method (ShadingMethod order): the sums of the passes each method ran
+/// ("lit", "separable:*", "texture-space*", "ray-march*", "parallax:*"); the rest of the frame is
+/// overhead.
+std::vector<double> methodPassMs(const render::RenderTimings& timings);
+
+/// What the controller chose for one organ.
+struct BudgetChoice {
+  std::string method, setting;
+  double footprintPx = 0.0;     ///< px
+  double predictedMs = 0.0;     ///< ms
+  double expectedRelRms = 0.0;  ///< the table's error for its view class
+  std::string view;             ///< the atlas frame its view resembles
+  bool fallback = false;        ///< below the footprint threshold: lit with wrap
+  quality::MeshWork mesh;       ///< what its method needs of the mesh each frame
+};
+
+}  // namespace tissue::scene

@@ -1,0 +1,80 @@
+#pragma once
+/// \file
+/// The budget bench (issue 16): a scene of several organs (a close-up, two at mid distance, two
+/// far and small), one of them deformed by a replayed session, rendered under frame budgets from
+/// tight to loose with the quality controller choosing each organ's method and setting
+/// (Scene::setBudgetMs), and with every single table setting applied to all organs. Each run's
+/// frame times (upload, render, read back: what a host's frame pays for the tissue) and the error
+/// of its last frame against the path-traced truth of the same frame (the organs' transformed
+/// meshes concatenated into one TruthMesh with the organs' one material; studies/atlas.h's
+/// scores). GL: the scene's own headless context.
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "tissue/core/result.h"
+#include "tissue/scene/scene.h"
+#include "tissue/studies/report.h"
+
+namespace tissue::studies {
+
+/// What `tissue-sim budget-bench` asks (plain struct with defaults).
+struct BudgetBenchConfig {
+  scene::SceneSettings scene;             ///< data folders, shaders, the controller's settings
+  std::filesystem::path mesh;             ///< the organs' mesh (data/meshes/liver.obj)
+  std::filesystem::path material;         ///< their material (data/materials/liver.json)
+  std::filesystem::path session;          ///< the replayed session (data/sessions/liver_poke_grasp.json)
+  int firstFrame = 140, lastFrame = 200;  ///< the session's frames played (the poke's descent)
+  int width = 128, height = 96;           ///< pixels, of the renders and the truth
+  std::vector<double> budgetsMs;          ///< empty: three from the fixed settings' measured times
+  int warmupFrames = 40;                  ///< per run, untimed (the controller learns)
+  int timedFrames = 60;                   ///< per run
+  /// ms: a fixed setting whose frame takes longer is dropped after that frame (it fits no budget
+  /// here: texture space without culling draws five 1024^2 maps, about 0.5 s a frame on llvmpipe).
+  double maxFixedFrameMs = 400.0;
+  double truthSeconds = 120.0;  ///< s for the truth at most
+  int truthSpp = 4096;          ///< truth samples per pixel at most
+  int threads = 0;              ///< truth threads; 0: all cores
+  /// A file of the truth image, read when it is there (and of this size), else written: delete it
+  /// when the scene, the frames or the truth's settings change.
+  std::filesystem::path truthCache;
+  std::function<void(const std::string&)> onProgress;  ///< one line per step; empty: none
+};
+
+/// One run: a budget with the controller, or a fixed setting.
+struct BudgetRun {
+  double budgetMs = 0.0;                         ///< 0 for a fixed setting
+  std::string method, setting;                   ///< the fixed setting (empty for the controller)
+  double frameMsMedian = 0.0, frameMsP95 = 0.0;  ///< ms
+  double relRms = 0.0, relRmsDebiased = 0.0;     ///< the last frame against the truth
+  std::vector<scene::BudgetChoice> choices;      ///< the controller's, at the last frame
+  int planChanges = 0;                           ///< the controller's plans during the run
+  bool tooSlow = false;  ///< a fixed setting stopped at a frame over maxFixedFrameMs (not scored)
+};
+
+/// One budget's row of the results.
+struct BudgetResult {
+  double budgetMs = 0.0;
+  double frameMsMedian = 0.0, frameMsP95 = 0.0;
+  double relRms = 0.0, relRmsDebiased = 0.0;
+  double fixedBestRelRms = 0.0, fixedBestRelRmsDebiased = 0.0;  ///< NaN when no fixed setting fits
+  std::string fixedBest;          ///< "method setting" of the best fixed setting that fits
+  bool withinTenPercent = false;  ///< frameMsP95 <= 1.1 budgetMs
+  bool beatsFixed = false;        ///< relRms < fixedBestRelRms
+};
+
+struct BudgetBenchResult {
+  std::vector<BudgetRun> controller, fixed;
+  std::vector<BudgetResult> results;
+  int truthSpp = 0;
+  double truthMs = 0.0, truthNoiseRelRms = 0.0;
+  int organPixels = 0;
+  StudyOutput output;  ///< budget_bench.json, .md, budget_bench.png (rel RMS against budget)
+};
+
+/// Runs the bench. Errors name the file or step.
+Result<BudgetBenchResult> runBudgetBench(const BudgetBenchConfig& config);
+
+}  // namespace tissue::studies

@@ -1,0 +1,267 @@
+// The quality controller (controller.h): the view class, the learned costs, the exact plan under
+// the budget and the held plan's hysteresis.
+#include "tissue/quality/controller.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tissue::quality {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+int wrapOption(const QualityTable& table, const ControllerSettings& s) {
+  const int wrap = table.find(s.wrapMethod, s.wrapSetting);
+  return wrap >= 0 ? wrap : table.find(s.wrapMethod, "default");
+}
+
+// The options object `view` may take: the wrap fallback alone below the footprint threshold.
+std::vector<int> candidatesOf(const QualityTable& table, const ObjectView& view,
+                              const ControllerSettings& s) {
+  std::vector<int> out;
+  const int wrap = wrapOption(table, s);
+  if (view.footprintPx < s.minFootprintPx && wrap >= 0) return {wrap};
+  if (view.allowed.empty()) {
+    for (std::size_t o = 0; o < table.options.size(); ++o)
+      out.push_back(int(o));
+  } else {
+    for (int o : view.allowed)
+      if (o >= 0 && std::size_t(o) < table.options.size()) out.push_back(o);
+  }
+  if (out.empty() && wrap >= 0) out.push_back(wrap);
+  return out;
+}
+
+double weightOf(const ObjectView& v) {
+  return std::max(0.0, v.importance) * std::max(0.0, v.footprintPx);
+}
+
+double costOf(std::span<const CostModel> costs, int option, const ObjectView& v) {
+  return std::max(0.0, costs[std::size_t(option)].predictMs(std::max(0.0, v.footprintPx)));
+}
+
+}  // namespace
+
+MeshWork meshWorkOf(std::string_view method, bool hasNormalMap) {
+  MeshWork w;
+  w.planes = method == "ray-march";  // François et al. 2006 eq. 9-10: the light's entry via the planes
+  // The ray march steps along T and B; parallax offsets the inner layers in tangent space
+  // (Norberg eq. 15-18); every method's normal map is in tangent space.
+  w.tangents = hasNormalMap || method == "ray-march" || method == "parallax";
+  return w;
+}
+
+CostModel costModelOf(const QualityOption& option) {
+  CostModel m;
+  m.fixedMs = m.priorFixedMs = option.fixedMs;
+  m.msPerPx = m.priorMsPerPx = option.msPerPx;
+  return m;
+}
+
+void observeCost(CostModel& m, double px, double ms, double learningRate) {
+  if (!std::isfinite(px) || !std::isfinite(ms)) return;
+  // Until 1 / rate samples the weights are a running mean (an EMA started without bias).
+  const double a = std::clamp(std::max(learningRate, 1.0 / double(m.samples + 1)), 0.0, 1.0);
+  m.w = (1 - a) * m.w + a;
+  m.wx = (1 - a) * m.wx + a * px;
+  m.wxx = (1 - a) * m.wxx + a * px * px;
+  m.wy = (1 - a) * m.wy + a * ms;
+  m.wxy = (1 - a) * m.wxy + a * px * ms;
+  ++m.samples;
+  const double mx = m.wx / m.w, my = m.wy / m.w;
+  const double var = m.wxx / m.w - mx * mx;
+  const double cov = m.wxy / m.w - mx * my;
+  if (m.samples >= 3 && var > (0.05 * mx) * (0.05 * mx) && var > 1e-12) {
+    const double b = cov / var;
+    if (b >= 0.0) {
+      m.msPerPx = b;
+      m.fixedMs = my - b * mx;
+      if (m.fixedMs < 0.0) {  // through the origin instead
+        m.fixedMs = 0.0;
+        m.msPerPx = m.wxy / std::max(m.wxx, 1e-30);
+      }
+      return;
+    }
+  }
+  // The px hardly vary: the prior's shape, scaled to the measured level.
+  const double prior = m.priorFixedMs + m.priorMsPerPx * mx;
+  if (prior > 1e-12) {
+    const double k = my / prior;
+    m.fixedMs = k * m.priorFixedMs;
+    m.msPerPx = k * m.priorMsPerPx;
+  } else {
+    m.fixedMs = my;
+    m.msPerPx = 0.0;
+  }
+}
+
+ViewClass viewClassOf(const ObjectView& v, double screenPx, const ControllerSettings& s) {
+  if (v.footprintPx >= s.closeUpFraction * screenPx ||
+      (s.closeUpDistanceMm > 0.0 && v.distanceMm < s.closeUpDistanceMm))
+    return ViewClass::CloseUp;
+  if (v.viewAngleDeg >= s.grazingDeg) return ViewClass::Grazing;
+  if (v.deforming) return ViewClass::Deforming;
+  return ViewClass::Rest;
+}
+
+Plan evaluatePlan(const QualityTable& table, std::span<const CostModel> costs, double overheadMs,
+                  std::span<const ObjectView> objects, double screenPx, std::vector<int> option,
+                  double budgetMs, const ControllerSettings& s) {
+  Plan p;
+  p.option = std::move(option);
+  p.predictedMs = overheadMs;
+  double we = 0.0, w = 0.0;
+  for (std::size_t i = 0; i < objects.size() && i < p.option.size(); ++i) {
+    const int o = p.option[i];
+    p.predictedMs += costOf(costs, o, objects[i]);
+    const double e = table.options[std::size_t(o)].relRms[std::size_t(viewClassOf(objects[i], screenPx, s))];
+    we += weightOf(objects[i]) * e * e;
+    w += weightOf(objects[i]);
+  }
+  p.expectedError = w > 0.0 ? std::sqrt(we / w) : 0.0;
+  p.fits = p.predictedMs <= budgetMs * (1.0 - s.headroom);
+  return p;
+}
+
+Plan choosePlan(const QualityTable& table, std::span<const CostModel> costs, double overheadMs,
+                std::span<const ObjectView> objects, double screenPx, double budgetMs,
+                const ControllerSettings& s) {
+  const std::size_t n = objects.size();
+  std::vector<std::vector<int>> cand(n);
+  for (std::size_t i = 0; i < n; ++i)
+    cand[i] = candidatesOf(table, objects[i], s);
+  const double grid = std::max(s.costGridMs, 1e-4);
+  const double free = budgetMs * (1.0 - s.headroom) - overheadMs;
+  // Exact multiple-choice knapsack: best[i][k] = least sum w e^2 of objects < i within k grid
+  // units (costs rounded up, so a plan found fits). Monotone in k, hence in the budget.
+  const long K = free >= 0.0 ? long(std::floor(free / grid + 1e-9)) : -1;
+  std::vector<int> option(n, -1);
+  bool fits = K >= 0;
+  for (std::size_t i = 0; i < n && fits; ++i)
+    if (cand[i].empty()) fits = false;
+  if (fits) {
+    const std::size_t cols = std::size_t(K) + 1;
+    std::vector<double> prev(cols, 0.0), next(cols);
+    std::vector<std::vector<int>> pick(n, std::vector<int>(cols, -1));
+    for (std::size_t i = 0; i < n; ++i) {
+      const ViewClass view = viewClassOf(objects[i], screenPx, s);
+      const double w = weightOf(objects[i]);
+      std::fill(next.begin(), next.end(), kInf);
+      for (int o : cand[i]) {
+        const long u = long(std::ceil(costOf(costs, o, objects[i]) / grid - 1e-9));
+        const double e = table.options[std::size_t(o)].relRms[std::size_t(view)];
+        const double term = w * e * e;
+        for (long k = u; k < long(cols); ++k) {
+          const double v = prev[std::size_t(k - u)] + term;
+          // Ties go to the cheaper option (fewer units used), for a steady choice.
+          if (v < next[std::size_t(k)] - 1e-15) {
+            next[std::size_t(k)] = v;
+            pick[i][std::size_t(k)] = o;
+          }
+        }
+      }
+      std::swap(prev, next);
+    }
+    if (std::isfinite(prev[std::size_t(K)])) {
+      long k = K;
+      for (std::size_t i = n; i-- > 0;) {
+        const int o = pick[i][std::size_t(k)];
+        option[i] = o;
+        k -= long(std::ceil(costOf(costs, o, objects[i]) / grid - 1e-9));
+      }
+    } else {
+      fits = false;
+    }
+  }
+  if (!fits) {  // nothing fits: each object's cheapest option
+    for (std::size_t i = 0; i < n; ++i) {
+      double best = kInf;
+      for (int o : cand[i]) {
+        const double c = costOf(costs, o, objects[i]);
+        if (c < best) {
+          best = c;
+          option[i] = o;
+        }
+      }
+      if (option[i] < 0) option[i] = 0;
+    }
+  }
+  Plan p = evaluatePlan(table, costs, overheadMs, objects, screenPx, std::move(option), budgetMs, s);
+  p.fits = fits;
+  return p;
+}
+
+QualityController::QualityController(QualityTable table, ControllerSettings settings)
+    : m_table(std::move(table)), m_settings(std::move(settings)) {
+  for (const QualityOption& o : m_table.options)
+    m_costs.push_back(costModelOf(o));
+  m_overheadMs = m_table.frameOverheadMs;
+}
+
+const std::vector<ObjectChoice>& QualityController::update(std::span<const ObjectView> objects,
+                                                           double screenPx, double budgetMs) {
+  const ControllerSettings& s = m_settings;
+  const Plan best = choosePlan(m_table, m_costs, m_overheadMs, objects, screenPx, budgetMs, s);
+  // A new budget or a new set of objects: the held plan was made for something else.
+  bool replace = m_plan.option.size() != objects.size() || budgetMs != m_budgetMs;
+  m_budgetMs = budgetMs;
+  if (!replace) {
+    // The held plan must still be allowed for each object (a footprint below the threshold
+    // takes the fallback at once).
+    for (std::size_t i = 0; i < objects.size() && !replace; ++i) {
+      const auto cand = candidatesOf(m_table, objects[i], s);
+      replace = std::find(cand.begin(), cand.end(), m_plan.option[i]) == cand.end();
+    }
+  }
+  Plan held;
+  if (!replace) {
+    held = evaluatePlan(m_table, m_costs, m_overheadMs, objects, screenPx, m_plan.option, budgetMs, s);
+    const bool over =
+        held.predictedMs > budgetMs * (1.0 + s.overBudgetTolerance) && best.predictedMs < held.predictedMs;
+    const bool gains =
+        m_age >= s.holdFrames && best.expectedError < held.expectedError * (1.0 - s.gainMargin);
+    replace = over || gains;
+  }
+  ++m_age;
+  if (replace) {
+    if (m_plan.option != best.option) ++m_changes;
+    m_plan = best;
+    m_age = 0;
+  } else {
+    m_plan = held;
+  }
+  m_lastObjects.assign(objects.begin(), objects.end());
+  m_choices.clear();
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const int o = m_plan.option[i];
+    const QualityOption& opt = m_table.options[std::size_t(o)];
+    ObjectChoice c;
+    c.option = o;
+    c.method = opt.method;
+    c.setting = opt.setting;
+    c.predictedMs = costOf(m_costs, o, objects[i]);
+    c.view = viewClassOf(objects[i], screenPx, s);
+    c.expectedRelRms = opt.relRms[std::size_t(c.view)];
+    c.fallback = objects[i].footprintPx < s.minFootprintPx;
+    c.mesh = meshWorkOf(opt.method, objects[i].hasNormalMap);
+    m_choices.push_back(std::move(c));
+  }
+  return m_choices;
+}
+
+void QualityController::observe(std::span<const CostSample> samples, double frameMs) {
+  double objectsMs = 0.0;
+  for (const CostSample& c : samples) {
+    if (c.object >= m_choices.size()) continue;
+    const int o = m_choices[c.object].option;
+    observeCost(m_costs[std::size_t(o)], m_lastObjects[c.object].footprintPx, c.ms, m_settings.learningRate);
+    objectsMs += c.ms;
+  }
+  if (std::isfinite(frameMs)) {
+    const double a = std::clamp(m_settings.learningRate, 0.0, 1.0);
+    m_overheadMs = (1 - a) * m_overheadMs + a * std::max(0.0, frameMs - objectsMs);
+  }
+}
+
+}  // namespace tissue::quality

@@ -1,0 +1,160 @@
+// The quality controller's table from the speed-accuracy atlas's JSON (quality_table.h).
+#include "tissue/quality/quality_table.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace tissue::quality {
+namespace detail {
+const char* embeddedDefaultAtlas();  // default_atlas_embed.cpp, generated from data/quality/
+}  // namespace detail
+namespace {
+
+int viewIndexOfFrame(const std::string& frame) {
+  for (std::size_t v = 0; v < kViewClassCount; ++v)
+    if (frame == viewClassFrame(ViewClass(v))) return int(v);
+  return -1;
+}
+
+// Least squares ms = a + b px over the samples; b clamped at 0 (then a is the mean).
+std::pair<double, double> fitLine(const std::vector<std::pair<double, double>>& pxMs) {
+  const double n = double(pxMs.size());
+  if (pxMs.empty()) return {0.0, 0.0};
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (const auto& [x, y] : pxMs) {
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+  }
+  const double det = n * sxx - sx * sx;
+  if (det <= 1e-9 * n * sxx) return {sy / n, 0.0};
+  const double b = (n * sxy - sx * sy) / det;
+  if (b < 0.0) return {sy / n, 0.0};
+  return {(sy - b * sx) / n, b};
+}
+
+}  // namespace
+
+std::string_view viewClassFrame(ViewClass view) {
+  switch (view) {
+    case ViewClass::Rest:
+      return "rest";
+    case ViewClass::Deforming:
+      return "poked";
+    case ViewClass::CloseUp:
+      return "close-up";
+    case ViewClass::Grazing:
+      return "grazing";
+  }
+  return "rest";
+}
+
+int QualityTable::find(std::string_view method, std::string_view setting) const {
+  for (std::size_t i = 0; i < options.size(); ++i)
+    if (options[i].method == method && options[i].setting == setting) return int(i);
+  return -1;
+}
+
+Result<QualityTable> qualityTableFromAtlasJson(std::string_view jsonText, const TableSettings& settings) {
+  const nlohmann::json json = nlohmann::json::parse(jsonText.begin(), jsonText.end(), nullptr, false);
+  if (json.is_discarded()) return Error{"quality table: the atlas JSON does not parse"};
+  if (!json.contains("results") || !json["results"].is_array())
+    return Error{"quality table: the atlas JSON has no 'results' list (tissue-sim atlas --json)"};
+  std::map<std::string, double> pixelsOf;  // per frame: organ pixels
+  if (json.contains("truth") && json["truth"].contains("frames"))
+    for (const auto& f : json["truth"]["frames"])
+      if (f.contains("frame") && f.contains("organ_pixels"))
+        pixelsOf[f["frame"].get<std::string>()] = f["organ_pixels"].get<double>();
+  struct Acc {
+    std::array<double, kViewClassCount> err{};
+    std::array<bool, kViewClassCount> has{};
+    std::vector<std::pair<double, double>> pxMs;
+  };
+  std::vector<std::pair<std::string, std::string>> order;
+  std::map<std::pair<std::string, std::string>, Acc> acc;
+  for (const auto& row : json["results"]) {
+    for (const char* key : {"method", "setting", "frame", "ms", "rel_rms"})
+      if (!row.contains(key)) return Error{std::string("quality table: a result lacks '") + key + "'"};
+    const std::pair<std::string, std::string> id{row["method"].get<std::string>(),
+                                                 row["setting"].get<std::string>()};
+    if (!acc.count(id)) order.push_back(id);
+    Acc& a = acc[id];
+    const std::string frame = row["frame"].get<std::string>();
+    const double ms = row["ms"].get<double>();
+    if (pixelsOf.count(frame) && std::isfinite(ms)) a.pxMs.push_back({pixelsOf[frame], ms});
+    const int v = viewIndexOfFrame(frame);
+    if (v < 0) continue;
+    double e = row["rel_rms"].is_number() ? row["rel_rms"].get<double>() : std::nan("");
+    if (settings.debiased && row.contains("rel_rms_debiased") && row["rel_rms_debiased"].is_number())
+      e = row["rel_rms_debiased"].get<double>();
+    if (!std::isfinite(e)) continue;
+    a.err[std::size_t(v)] = e;
+    a.has[std::size_t(v)] = true;
+  }
+  QualityTable table;
+  std::map<std::pair<std::string, std::string>, std::pair<double, double>> lines;
+  for (const auto& id : order)
+    lines[id] = fitLine(acc[id].pxMs);
+  for (const auto& [id, line] : lines)
+    if (id.first == "lit") table.frameOverheadMs = std::max(0.0, line.first);
+  for (const auto& id : order) {
+    const Acc& a = acc[id];
+    double sum = 0.0;
+    int n = 0;
+    for (std::size_t v = 0; v < kViewClassCount; ++v)
+      if (a.has[v]) {
+        sum += a.err[v];
+        ++n;
+      }
+    if (n == 0) continue;  // no frame the controller uses
+    QualityOption o;
+    o.method = id.first;
+    o.setting = id.second;
+    for (std::size_t v = 0; v < kViewClassCount; ++v)
+      o.relRms[v] = a.has[v] ? a.err[v] : sum / n;
+    o.fixedMs = std::max(0.0, lines[id].first - table.frameOverheadMs);
+    o.msPerPx = lines[id].second;
+    table.options.push_back(std::move(o));
+  }
+  if (table.options.empty())
+    return Error{
+        "quality table: the atlas JSON has no result on the rest, poked, close-up or grazing frames"};
+  if (settings.addWrap && table.find("lit", kWrapSetting) < 0) {
+    const int lit = table.find("lit", "default");
+    if (lit >= 0) {
+      QualityOption wrap = table.options[std::size_t(lit)];
+      wrap.setting = std::string(kWrapSetting);
+      table.options.push_back(std::move(wrap));
+    }
+  }
+  table.source = "atlas JSON";
+  return table;
+}
+
+Result<QualityTable> loadQualityTable(const std::filesystem::path& atlasJson, const TableSettings& settings) {
+  std::ifstream in(atlasJson);
+  if (!in) return Error{"quality table: cannot read " + atlasJson.string()};
+  std::stringstream text;
+  text << in.rdbuf();
+  auto table = qualityTableFromAtlasJson(text.str(), settings);
+  if (!table) return Error{atlasJson.string() + ": " + table.error().message};
+  table->source = atlasJson.string();
+  return table;
+}
+
+const QualityTable& defaultQualityTable() {
+  static const QualityTable table = [] {
+    auto parsed = qualityTableFromAtlasJson(detail::embeddedDefaultAtlas());
+    QualityTable t = parsed ? std::move(*parsed) : QualityTable{};
+    t.source = "data/quality/default_atlas.json (embedded)";
+    return t;
+  }();
+  return table;
+}
+
+}  // namespace tissue::quality

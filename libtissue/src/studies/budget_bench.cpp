@@ -1,0 +1,420 @@
+// The budget bench (budget_bench.h): the scene of organs, the session's poke as recorded shapes,
+// the fixed settings and the controller under each budget, scored against one path-traced truth.
+#include "tissue/studies/budget_bench.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "json_text.h"
+#include "tissue/core/stopwatch.h"
+#include "tissue/scene/session.h"
+#include "tissue/scene/truth_view.h"
+#include "tissue/studies/atlas.h"
+
+namespace tissue::studies {
+namespace {
+
+Mat4 placed(Float3 t, float rotZDeg) {
+  const float a = rotZDeg * 3.14159265f / 180.0f;
+  Mat4 m = kIdentity4;
+  m[0] = std::cos(a), m[1] = std::sin(a), m[4] = -std::sin(a), m[5] = std::cos(a);
+  m[12] = t.x, m[13] = t.y, m[14] = t.z;
+  return m;
+}
+
+// The organs: the poked one first (mid distance, the camera's target), a close-up at the lower
+// left, one more at mid distance, two far and small.
+struct Placement {
+  const char* name;
+  Mat4 model;
+};
+std::vector<Placement> placements() {
+  return {{"poked (mid)", placed({0, 0, 0}, 0)},
+          {"close-up", placed({-150, -330, 170}, 30)},
+          {"mid", placed({260, 120, -20}, -20)},
+          {"far 1", placed({-420, 1400, -120}, 60)},
+          {"far 2", placed({500, 1900, -160}, -40)}};
+}
+
+render::Camera benchCamera() {
+  render::Camera c;
+  c.eye = {0.0f, -520.0f, 430.0f};
+  c.target = {30.0f, 60.0f, 0.0f};
+  c.up = {0.0f, 0.0f, 1.0f};
+  c.verticalFovDeg = 45.0f;
+  c.nearMm = 5.0f;
+  c.farMm = 5000.0f;
+  return c;
+}
+
+double percentile(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const std::size_t i = std::size_t(std::ceil(q * double(v.size()))) - 1;
+  return v[std::min(i, v.size() - 1)];
+}
+
+// The displayed linear radiance of the last frame: the composite's two terms (as the atlas scores).
+Result<std::vector<Float3>> displayedRadiance(render::Renderer& renderer) {
+  auto radiance = renderer.readFrame(render::FrameView::Radiance);
+  if (!radiance) return radiance.error();
+  auto blurred = renderer.readFrame(render::FrameView::BlurredDiffuse);
+  if (!blurred) return blurred.error();
+  std::vector<Float3> out(radiance->pixels.size());
+  for (std::size_t i = 0; i < out.size(); ++i)
+    out[i] = {radiance->pixels[i].x + blurred->pixels[i].x, radiance->pixels[i].y + blurred->pixels[i].y,
+              radiance->pixels[i].z + blurred->pixels[i].z};
+  return out;
+}
+
+// The truth image as raw arrays (the bench's cache; the file name says what it is of).
+void writeTruthImage(const std::filesystem::path& file, const truth::TruthImage& t) {
+  std::filesystem::create_directories(file.parent_path());
+  std::ofstream out(file, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(&t.width), sizeof t.width);
+  out.write(reinterpret_cast<const char*>(&t.height), sizeof t.height);
+  out.write(reinterpret_cast<const char*>(&t.samplesPerPixel), sizeof t.samplesPerPixel);
+  out.write(reinterpret_cast<const char*>(&t.seconds), sizeof t.seconds);
+  out.write(reinterpret_cast<const char*>(t.radiance.data()),
+            std::streamsize(t.radiance.size() * sizeof(Float3)));
+  out.write(reinterpret_cast<const char*>(t.stderrs.data()),
+            std::streamsize(t.stderrs.size() * sizeof(Float3)));
+  out.write(reinterpret_cast<const char*>(t.covered.data()), std::streamsize(t.covered.size()));
+}
+std::optional<truth::TruthImage> readTruthImage(const std::filesystem::path& file, int width, int height) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return std::nullopt;
+  truth::TruthImage t;
+  in.read(reinterpret_cast<char*>(&t.width), sizeof t.width);
+  in.read(reinterpret_cast<char*>(&t.height), sizeof t.height);
+  if (!in || t.width != width || t.height != height) return std::nullopt;
+  in.read(reinterpret_cast<char*>(&t.samplesPerPixel), sizeof t.samplesPerPixel);
+  in.read(reinterpret_cast<char*>(&t.seconds), sizeof t.seconds);
+  const std::size_t n = std::size_t(width) * std::size_t(height);
+  t.radiance.resize(n), t.stderrs.resize(n), t.covered.resize(n);
+  in.read(reinterpret_cast<char*>(t.radiance.data()), std::streamsize(n * sizeof(Float3)));
+  in.read(reinterpret_cast<char*>(t.stderrs.data()), std::streamsize(n * sizeof(Float3)));
+  in.read(reinterpret_cast<char*>(t.covered.data()), std::streamsize(n));
+  if (!in) return std::nullopt;
+  return t;
+}
+
+struct Bench {
+  const BudgetBenchConfig& config;
+  scene::Scene scene;
+  std::vector<std::vector<Float3>> shapes;  // the poked organ's geometric positions per frame
+  const truth::TruthImage* truth = nullptr;
+  std::vector<Float3> truthLinear;
+
+  // One run: warm-up and timed frames cycling through the poke, then the last shape scored.
+  Result<BudgetRun> run(double abortMs = 1e30) {
+    BudgetRun r;
+    std::vector<double> ms;
+    const int total = config.warmupFrames + config.timedFrames;
+    int slow = 0;
+    const int changesBefore = scene.qualityController() ? scene.qualityController()->plansChanged() : 0;
+    for (int f = 0; f < total; ++f) {
+      // Forth and back through the recorded poke, ending on its deepest frame.
+      const std::size_t n = shapes.size();
+      const std::size_t back = std::size_t(total - 1 - f) % (2 * n - 2);
+      const std::size_t k = back < n ? n - 1 - back : back - (n - 1);
+      if (auto ok = scene.setPositions(0, shapes[k]); !ok) return ok.error();
+      const Stopwatch watch;
+      auto image = scene.renderImage(config.width, config.height);
+      if (!image) return image.error();
+      const double frameMs = watch.elapsedMs();
+      if (f >= config.warmupFrames) ms.push_back(frameMs);
+      // Five frames in a row over the cap (a shared machine's stalls come one at a time); the
+      // first frame warms up (shaders, maps).
+      slow = f > 0 && frameMs > abortMs ? slow + 1 : 0;
+      if (slow >= 5) {
+        r.tooSlow = true;
+        r.frameMsMedian = r.frameMsP95 = frameMs;
+        r.relRms = r.relRmsDebiased = std::nan("");
+        return r;
+      }
+    }
+    r.frameMsMedian = percentile(ms, 0.5);
+    r.frameMsP95 = percentile(ms, 0.95);
+    auto linear = displayedRadiance(scene.renderer());
+    if (!linear) return linear.error();
+    const AtlasScore score = scoreAgainstTruth(truthLinear, *linear, truth->covered);
+    r.relRms = score.relRms;
+    r.relRmsDebiased = debiasedError(score.relRms, truthNoiseRelRms(*truth));
+    r.choices = scene.budgetChoices();
+    if (scene.qualityController()) r.planChanges = scene.qualityController()->plansChanged() - changesBefore;
+    return r;
+  }
+};
+
+std::string jsonOf(const BudgetBenchResult& b, const BudgetBenchConfig& config) {
+  nlohmann::json results = nlohmann::json::array(), fixedRuns = nlohmann::json::array(),
+                 runs = nlohmann::json::array();
+  for (const BudgetResult& r : b.results)
+    results.push_back(
+        {{"budget_ms", r.budgetMs},
+         {"frame_ms_median", r.frameMsMedian},
+         {"frame_ms_p95", r.frameMsP95},
+         {"rel_rms", r.relRms},
+         {"rel_rms_debiased", r.relRmsDebiased},
+         {"fixed_best_rel_rms",
+          std::isfinite(r.fixedBestRelRms) ? nlohmann::json(r.fixedBestRelRms) : nlohmann::json()},
+         {"fixed_best_rel_rms_debiased", std::isfinite(r.fixedBestRelRmsDebiased)
+                                             ? nlohmann::json(r.fixedBestRelRmsDebiased)
+                                             : nlohmann::json()},
+         {"fixed_best", r.fixedBest},
+         {"p95_within_10_percent", r.withinTenPercent},
+         {"beats_fixed", r.beatsFixed}});
+  for (const BudgetRun& f : b.fixed)
+    fixedRuns.push_back({{"method", f.method},
+                         {"setting", f.setting},
+                         {"frame_ms_median", f.frameMsMedian},
+                         {"frame_ms_p95", f.frameMsP95},
+                         {"rel_rms", f.relRms},
+                         {"rel_rms_debiased", f.relRmsDebiased},
+                         {"too_slow", f.tooSlow}});
+  const auto names = placements();
+  for (const BudgetRun& c : b.controller) {
+    nlohmann::json choices = nlohmann::json::array();
+    for (std::size_t i = 0; i < c.choices.size(); ++i)
+      choices.push_back({{"organ", i < names.size() ? names[i].name : ""},
+                         {"method", c.choices[i].method},
+                         {"setting", c.choices[i].setting},
+                         {"footprint_px", c.choices[i].footprintPx},
+                         {"view", c.choices[i].view},
+                         {"predicted_ms", c.choices[i].predictedMs},
+                         {"fallback", c.choices[i].fallback},
+                         {"planes", c.choices[i].mesh.planes},
+                         {"tangents", c.choices[i].mesh.tangents}});
+    runs.push_back({{"budget_ms", c.budgetMs}, {"plan_changes", c.planChanges}, {"choices", choices}});
+  }
+  const nlohmann::json json = {{"width", config.width},
+                               {"height", config.height},
+                               {"session_frames", {config.firstFrame, config.lastFrame}},
+                               {"timed_frames", config.timedFrames},
+                               {"warmup_frames", config.warmupFrames},
+                               {"truth",
+                                {{"samples_per_pixel", b.truthSpp},
+                                 {"ms", b.truthMs},
+                                 {"noise_rel_rms", b.truthNoiseRelRms},
+                                 {"organ_pixels", b.organPixels}}},
+                               {"results", results},
+                               {"fixed", fixedRuns},
+                               {"controller", runs}};
+  return detail::jsonText(json);
+}
+
+void writeReport(BudgetBenchResult& b, const BudgetBenchConfig& config) {
+  b.output.json = jsonOf(b, config);
+  Report& report = b.output.report;
+  report.add("budget_bench.json", b.output.json);
+  Table t{{"budget ms", "median ms", "p95 ms", "p95 <= 1.1 budget", "rel RMS", "debiased",
+           "best fixed that fits", "its rel RMS", "its debiased", "lower error"},
+          {}};
+  for (const BudgetResult& r : b.results)
+    t.rows.push_back({fixed(r.budgetMs, 1), fixed(r.frameMsMedian, 1), fixed(r.frameMsP95, 1),
+                      r.withinTenPercent ? "yes" : "no", fixed(r.relRms), fixed(r.relRmsDebiased),
+                      r.fixedBest.empty() ? "none" : r.fixedBest, fixed(r.fixedBestRelRms),
+                      fixed(r.fixedBestRelRmsDebiased), r.beatsFixed ? "yes" : "no"});
+  Table f{{"fixed setting (all organs)", "median ms", "p95 ms", "rel RMS", "debiased"}, {}};
+  for (const BudgetRun& r : b.fixed)
+    f.rows.push_back({r.method + " " + r.setting, fixed(r.frameMsMedian, 1), fixed(r.frameMsP95, 1),
+                      fixed(r.relRms), fixed(r.relRmsDebiased)});
+  Table c{{"budget ms", "organ", "footprint px", "view", "chosen", "predicted ms"}, {}};
+  const auto names = placements();
+  for (const BudgetRun& r : b.controller)
+    for (std::size_t i = 0; i < r.choices.size(); ++i)
+      c.rows.push_back(
+          {fixed(r.budgetMs, 1), i < names.size() ? names[i].name : "", fixed(r.choices[i].footprintPx, 0),
+           r.choices[i].view,
+           r.choices[i].method + " " + r.choices[i].setting + (r.choices[i].fallback ? " (fallback)" : ""),
+           fixed(r.choices[i].predictedMs, 2)});
+  char truthLine[256];
+  std::snprintf(
+      truthLine, sizeof truthLine,
+      "Truth: %d spp, %.0f s, %d organ pixels, noise rel RMS %.3f (debiased = sqrt(err^2 - noise^2)).\n\n",
+      b.truthSpp, b.truthMs / 1e3, b.organPixels, b.truthNoiseRelRms);
+  b.output.summary = markdownTable(t);
+  report.add("budget_bench.md", "# Budget bench\n\n" + std::string(truthLine) + markdownTable(t) + "\n" +
+                                    markdownTable(f) + "\n" + markdownTable(c));
+  ReportChart chart;
+  chart.name = "budget_bench.png";
+  chart.settings.title = "error against frame budget: controller vs best fixed setting that fits";
+  chart.settings.xLabel = "frame budget (ms)";
+  chart.settings.yLabel = "rel RMS against the truth (debiased)";
+  inspect::ChartSeries ctl{"controller", {}, {}, true}, best{"best fixed setting that fits", {}, {}, true};
+  for (const BudgetResult& r : b.results) {
+    ctl.x.push_back(r.budgetMs);
+    ctl.y.push_back(r.relRmsDebiased);
+    if (std::isfinite(r.fixedBestRelRmsDebiased)) {
+      best.x.push_back(r.budgetMs);
+      best.y.push_back(r.fixedBestRelRmsDebiased);
+    }
+  }
+  chart.series = {ctl, best};
+  report.charts.push_back(std::move(chart));
+}
+
+}  // namespace
+
+Result<BudgetBenchResult> runBudgetBench(const BudgetBenchConfig& config) {
+  const auto say = [&](const std::string& line) {
+    if (config.onProgress) config.onProgress(line);
+  };
+  if (config.lastFrame <= config.firstFrame || config.firstFrame < 0)
+    return Error{"budget bench: give session frames first < last"};
+  // 1 the session's poke as shapes: its scenario's loop, stepped without GL.
+  auto session = scene::loadSession(config.session);
+  if (!session) return session.error();
+  scene::OrganDesc poked{.mesh = config.mesh, .material = config.material, .scenario = session->scenario};
+  auto simulated = scene::loadSimulatedOrgan(poked, config.scene);
+  if (!simulated) return simulated.error();
+  scene::OrganLoopConfig loopConfig;
+  loopConfig.planes = simulated->assets.planes;
+  auto loop = scene::OrganLoop::create(simulated->scenario, simulated->assets.mesh, loopConfig);
+  if (!loop) return loop.error();
+  if (auto ok = scene::checkSessionMatches(*session, *loop); !ok) return ok.error();
+  if (std::size_t(config.lastFrame) >= session->frames.size())
+    return Error{config.session.string() + ": has " + std::to_string(session->frames.size()) +
+                 " frames; ask for fewer"};
+  say("replaying " + config.session.filename().string() + " to frame " + std::to_string(config.lastFrame));
+  std::vector<std::vector<Float3>> shapes;
+  for (int f = 0; f <= config.lastFrame; ++f) {
+    auto step = loop->step(scene::sessionInput(*session, std::size_t(f)));
+    if (!step) return step.error();
+    if (f >= config.firstFrame) {
+      const auto g = loop->geometricPositions();
+      shapes.emplace_back(g.begin(), g.end());
+    }
+  }
+  // 2 the scene: the organs as static meshes, the poked one's shape set per frame.
+  scene::SceneSettings settings = config.scene;
+  settings.renderer.finishPasses = true;  // llvmpipe: pass times to completion, for the controller
+  settings.renderer.samples = 0;
+  auto created = scene::Scene::create({}, settings);
+  if (!created) return created.error();
+  Bench bench{config, std::move(*created), std::move(shapes), nullptr, {}};
+  scene::Scene& sc = bench.scene;
+  for (const Placement& p : placements()) {
+    scene::OrganDesc d{.mesh = config.mesh, .material = config.material, .model = p.model};
+    auto id = sc.addOrgan(d);
+    if (!id) return id.error();
+  }
+  sc.setCamera(benchCamera());
+  sc.setShadows(true);
+  if (auto first = sc.renderImage(config.width, config.height); !first) return first.error();
+  render::Scene frame = sc.renderScene();  // the lights as framed; they stay
+  frame.camera = sc.camera();
+  // 3 the truth of the last frame: the organs' transformed meshes as one, their one material.
+  scene::OrganAssets all = sc.assets(0);
+  all.mesh = SurfaceMesh{};
+  std::vector<Float3> world;
+  const auto places = placements();
+  for (std::size_t i = 0; i < places.size(); ++i) {
+    const scene::OrganAssets& a = sc.assets(i);
+    const auto base = std::uint32_t(world.size());
+    for (std::size_t v = 0; v < a.mesh.positions.size(); ++v) {
+      const Float3 p = i == 0 ? bench.shapes.back()[a.mesh.geometricIndex[v]] : a.mesh.positions[v];
+      world.push_back(transformPoint(places[i].model, p));
+      all.mesh.positions.push_back(world.back());
+      all.mesh.uvs.push_back(a.mesh.uvs[v]);
+    }
+    for (const Triangle& t : a.mesh.triangles)
+      all.mesh.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  }
+  truth::PathTraceSettings ts;
+  ts.width = config.width;
+  ts.height = config.height;
+  ts.samplesPerPass = 4;
+  ts.passes = std::max(1, config.truthSpp / ts.samplesPerPass);
+  ts.threads = config.threads;
+  ts.seed = 16;
+  ts.onPass = [&](const truth::PathTraceProgress& p) {
+    char line[128];
+    std::snprintf(line, sizeof line, "truth: %d spp, %.0f s, mean relative stderr %.3f", p.samplesPerPixel,
+                  p.seconds, p.meanRelativeStderr);
+    say(line);
+    return p.seconds < config.truthSeconds;
+  };
+  std::optional<truth::TruthImage> cached;
+  if (!config.truthCache.empty()) cached = readTruthImage(config.truthCache, config.width, config.height);
+  Result<truth::TruthImage> truthImage =
+      cached ? Result<truth::TruthImage>(std::move(*cached)) : scene::renderTruth(all, world, frame, ts);
+  if (!truthImage) return truthImage.error();
+  if (cached) say("truth from " + config.truthCache.string());
+  if (!cached && !config.truthCache.empty()) writeTruthImage(config.truthCache, *truthImage);
+  BudgetBenchResult out;
+  out.truthSpp = truthImage->samplesPerPixel;
+  out.truthMs = 1e3 * truthImage->seconds;
+  out.truthNoiseRelRms = truthNoiseRelRms(*truthImage);
+  for (std::uint8_t c : truthImage->covered)
+    out.organPixels += c;
+  bench.truth = &*truthImage;
+  bench.truthLinear.assign(truthImage->radiance.begin(), truthImage->radiance.end());
+  // 4 every table setting on every organ.
+  quality::QualityTable table = quality::defaultQualityTable();
+  if (!settings.qualityTable.empty()) {
+    auto loaded = quality::loadQualityTable(settings.qualityTable);
+    if (!loaded) return loaded.error();
+    table = std::move(*loaded);
+  }
+  if (table.options.empty()) return Error{"budget bench: the quality table has no options"};
+  for (const quality::QualityOption& option : table.options) {
+    for (std::size_t i = 0; i < sc.organCount(); ++i)
+      if (auto ok = sc.setMethodOption(i, option); !ok) return ok.error();
+    auto r = bench.run(config.maxFixedFrameMs);
+    if (!r) return Error{"budget bench: " + option.method + " " + option.setting + ": " + r.error().message};
+    r->method = option.method;
+    r->setting = option.setting;
+    say("fixed " + option.method + " " + option.setting + ": median " + fixed(r->frameMsMedian, 1) +
+        " ms, p95 " + fixed(r->frameMsP95, 1) + " ms, rel RMS " + fixed(r->relRms));
+    out.fixed.push_back(std::move(*r));
+  }
+  // 5 the budgets: given, or from the fixed settings' times (tight: just above the cheapest;
+  // loose: the dearest but the slowest outliers; one between).
+  std::vector<double> budgets = config.budgetsMs;
+  if (budgets.empty()) {
+    std::vector<double> p95;
+    for (const BudgetRun& f : out.fixed)
+      p95.push_back(f.frameMsP95);
+    std::sort(p95.begin(), p95.end());
+    const double tight = 1.15 * p95.front();
+    const double loose = std::max(2.0 * tight, p95[std::size_t(0.75 * double(p95.size() - 1))]);
+    budgets = {tight, std::sqrt(tight * loose), loose};
+  }
+  // 6 the controller under each budget.
+  for (double budget : budgets) {
+    if (auto ok = sc.setBudgetMs(budget); !ok) return ok.error();
+    auto r = bench.run();
+    if (!r) return Error{"budget bench: budget " + fixed(budget, 1) + " ms: " + r.error().message};
+    r->budgetMs = budget;
+    say("budget " + fixed(budget, 1) + " ms: median " + fixed(r->frameMsMedian, 1) + " ms, p95 " +
+        fixed(r->frameMsP95, 1) + " ms, rel RMS " + fixed(r->relRms));
+    BudgetResult res;
+    res.budgetMs = budget;
+    res.frameMsMedian = r->frameMsMedian;
+    res.frameMsP95 = r->frameMsP95;
+    res.relRms = r->relRms;
+    res.relRmsDebiased = r->relRmsDebiased;
+    res.fixedBestRelRms = res.fixedBestRelRmsDebiased = std::nan("");
+    for (const BudgetRun& f : out.fixed)
+      if (!f.tooSlow && f.frameMsP95 <= 1.1 * budget && !(f.relRms >= res.fixedBestRelRms)) {
+        res.fixedBestRelRms = f.relRms;
+        res.fixedBestRelRmsDebiased = f.relRmsDebiased;
+        res.fixedBest = f.method + " " + f.setting;
+      }
+    res.withinTenPercent = res.frameMsP95 <= 1.1 * budget;
+    res.beatsFixed = std::isfinite(res.fixedBestRelRms) ? res.relRms < res.fixedBestRelRms : true;
+    out.results.push_back(res);
+    out.controller.push_back(std::move(*r));
+  }
+  (void)sc.setBudgetMs(0.0);
+  writeReport(out, config);
+  return out;
+}
+
+}  // namespace tissue::studies

@@ -1,0 +1,210 @@
+// The quality controller's properties: the plan fits the budget, more budget never gives a higher
+// expected error, the held plan stays under noisy costs, tiny footprints fall back to lit with
+// wrap, learned costs converge to the measured ones, and the mesh work follows the method.
+#include "tissue/quality/controller.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace tissue::quality {
+namespace {
+
+QualityOption option(std::string method, std::string setting, double err, double fixedMs, double msPerPx) {
+  QualityOption o;
+  o.method = std::move(method);
+  o.setting = std::move(setting);
+  o.relRms = {err, err * 1.1, err * 1.3, err * 1.2};
+  o.fixedMs = fixedMs;
+  o.msPerPx = msPerPx;
+  return o;
+}
+
+// A table of the atlas's shape: cheap and wrong to dear and right.
+QualityTable table() {
+  QualityTable t;
+  t.options = {option("lit", "default", 0.50, 0.1, 1e-4),
+               option("lit", "wrap", 0.48, 0.1, 1.1e-4),
+               option("separable", "preintegrated-7", 0.40, 0.8, 3e-4),
+               option("separable", "preintegrated-17", 0.35, 1.0, 6e-4),
+               option("texture-space", "6g-opt", 0.30, 3.0, 8e-4),
+               option("ray-march", "10", 0.20, 1.0, 2e-3),
+               option("ray-march", "50", 0.12, 1.0, 8e-3)};
+  t.frameOverheadMs = 2.0;
+  return t;
+}
+
+std::vector<CostModel> priors(const QualityTable& t) {
+  std::vector<CostModel> c;
+  for (const QualityOption& o : t.options)
+    c.push_back(costModelOf(o));
+  return c;
+}
+
+std::vector<ObjectView> objects() {
+  std::vector<ObjectView> v(5);
+  v[0].footprintPx = 40000;  // close-up
+  v[1].footprintPx = 6000;
+  v[1].deforming = true;
+  v[2].footprintPx = 3000;
+  v[3].footprintPx = 900;
+  v[3].viewAngleDeg = 80;
+  v[4].footprintPx = 150;  // far and small
+  return v;
+}
+
+constexpr double kScreenPx = 320.0 * 240.0;
+
+TEST(QualityController, PlanFitsTheBudget) {
+  const QualityTable t = table();
+  const auto costs = priors(t);
+  const auto objs = objects();
+  for (double budget : {3.0, 5.0, 8.0, 12.0, 20.0, 50.0, 200.0, 1000.0}) {
+    const Plan p = choosePlan(t, costs, t.frameOverheadMs, objs, kScreenPx, budget);
+    ASSERT_EQ(p.option.size(), objs.size());
+    if (!p.fits) continue;
+    EXPECT_LE(p.predictedMs, budget * (1.0 - ControllerSettings{}.headroom) + 1e-9) << budget;
+  }
+  // Tight budgets cannot be met by anything: the cheapest plan, flagged.
+  const Plan none = choosePlan(t, costs, t.frameOverheadMs, objs, kScreenPx, 1.0);
+  EXPECT_FALSE(none.fits);
+  // A loose one is met, by something better than all-lit.
+  const Plan loose = choosePlan(t, costs, t.frameOverheadMs, objs, kScreenPx, 1000.0);
+  EXPECT_TRUE(loose.fits);
+  EXPECT_LT(loose.expectedError, 0.2);
+}
+
+TEST(QualityController, MoreBudgetNeverGivesAHigherExpectedError) {
+  const QualityTable t = table();
+  const auto costs = priors(t);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> px(50.0, 30000.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<ObjectView> objs(6);
+    for (auto& o : objs)
+      o.footprintPx = px(rng);
+    double last = 1e30;
+    for (double budget = 3.0; budget < 150.0; budget *= 1.13) {
+      const Plan p = choosePlan(t, costs, t.frameOverheadMs, objs, kScreenPx, budget);
+      if (!p.fits) continue;
+      EXPECT_LE(p.expectedError, last + 1e-12) << "trial " << trial << " budget " << budget;
+      last = p.expectedError;
+    }
+    EXPECT_LT(last, 1e30);  // some budget fitted
+  }
+}
+
+TEST(QualityController, TinyFootprintsFallBackToLitWithWrap) {
+  const QualityTable t = table();
+  QualityController c(t);
+  const auto& choices = c.update(objects(), kScreenPx, 1000.0);  // budget for anything
+  ASSERT_EQ(choices.size(), 5u);
+  EXPECT_EQ(choices[4].method, "lit");
+  EXPECT_EQ(choices[4].setting, "wrap");
+  EXPECT_TRUE(choices[4].fallback);
+  // Above the threshold the loose budget buys the best method.
+  EXPECT_EQ(choices[0].method, "ray-march");
+  EXPECT_EQ(choices[0].setting, "50");
+  EXPECT_FALSE(choices[0].fallback);
+}
+
+// `frames` frames of `c` whose measured costs are the table's (the true costs) times a noise
+// factor and, on odd frames, times `oddFactor` (even: 1 / oddFactor).
+void runFrames(QualityController& c, const std::vector<ObjectView>& objs, double budget, int frames,
+               std::mt19937& rng, double oddFactor) {
+  const QualityTable& t = c.table();
+  std::normal_distribution<double> noise(1.0, 0.04);  // 4% measurement noise
+  for (int f = 0; f < frames; ++f) {
+    const auto& ch = c.update(objs, kScreenPx, budget);
+    std::vector<CostSample> samples;
+    double frame = t.frameOverheadMs;
+    for (std::size_t i = 0; i < ch.size(); ++i) {
+      const QualityOption& o = t.options[std::size_t(ch[i].option)];
+      const double swing = f % 2 ? oddFactor : 1.0 / oddFactor;
+      samples.push_back({i, (o.fixedMs + o.msPerPx * objs[i].footprintPx) * noise(rng) * swing});
+      frame += samples.back().ms;
+    }
+    c.observe(samples, frame);
+  }
+}
+
+TEST(QualityController, HysteresisHoldsThePlanUnderNoisyCosts) {
+  ControllerSettings s;
+  s.holdFrames = 10;
+  QualityController c(table(), s);
+  const auto objs = objects();
+  const double budget = 14.0;
+  std::mt19937 rng(3);
+  runFrames(c, objs, budget, 60, rng, 1.0);  // settle on the true costs
+  const int changesAfterSettling = c.plansChanged();
+  const std::vector<int> held = c.plan().option;
+  runFrames(c, objs, budget, 300, rng, 1.0);
+  EXPECT_EQ(c.plansChanged(), changesAfterSettling);
+  EXPECT_EQ(c.plan().option, held);
+  // Without hysteresis (and learning from each frame alone) costs swinging by 25% do change the
+  // plan: the test can fail.
+  ControllerSettings none = s;
+  none.holdFrames = 0;
+  none.gainMargin = 0.0;
+  none.overBudgetTolerance = 0.0;
+  none.learningRate = 1.0;
+  QualityController jumpy(table(), none);
+  std::mt19937 rng2(3);
+  runFrames(jumpy, objs, budget, 360, rng2, 1.25);
+  EXPECT_GT(jumpy.plansChanged(), 2);
+  // The same swings with hysteresis: the held plan stays.
+  QualityController steady(table(), s);
+  std::mt19937 rng3(3);
+  runFrames(steady, objs, budget, 60, rng3, 1.0);
+  const int settled = steady.plansChanged();
+  runFrames(steady, objs, budget, 300, rng3, 1.04);
+  EXPECT_EQ(steady.plansChanged(), settled);
+  // A new budget is planned for at once, hold or not.
+  const auto& loose = steady.update(objs, kScreenPx, 1000.0);
+  EXPECT_EQ(loose[0].setting, "50");
+}
+
+TEST(QualityController, LearnedCostConvergesToTheMeasuredCost) {
+  // The prior is 3x off; the machine's cost is 1.5 ms + 4e-4 ms/px.
+  CostModel m = costModelOf(option("separable", "x", 0.3, 0.5, 1.2e-3));
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> px(500.0, 20000.0);
+  std::normal_distribution<double> noise(1.0, 0.05);
+  for (int i = 0; i < 400; ++i) {
+    const double x = px(rng);
+    observeCost(m, x, (1.5 + 4e-4 * x) * noise(rng), 0.05);
+  }
+  for (double x : {1000.0, 10000.0, 20000.0})
+    EXPECT_NEAR(m.predictMs(x), 1.5 + 4e-4 * x, 0.08 * (1.5 + 4e-4 * x));
+  // At one footprint only, the prediction at that footprint converges too.
+  CostModel fixed = costModelOf(option("lit", "y", 0.5, 0.2, 1e-4));
+  for (int i = 0; i < 200; ++i)
+    observeCost(fixed, 5000.0, 3.0 * noise(rng), 0.1);
+  EXPECT_NEAR(fixed.predictMs(5000.0), 3.0, 0.15);
+}
+
+TEST(QualityController, MeshWorkFollowsTheMethod) {
+  EXPECT_FALSE(meshWorkOf("lit", false).planes);
+  EXPECT_FALSE(meshWorkOf("lit", false).tangents);
+  EXPECT_TRUE(meshWorkOf("lit", true).tangents);
+  EXPECT_FALSE(meshWorkOf("separable", true).planes);
+  EXPECT_TRUE(meshWorkOf("ray-march", false).planes);
+  EXPECT_TRUE(meshWorkOf("ray-march", false).tangents);
+  EXPECT_FALSE(meshWorkOf("parallax", false).planes);
+  EXPECT_TRUE(meshWorkOf("parallax", false).tangents);
+}
+
+TEST(QualityController, ViewClassFromFootprintAngleAndDeformation) {
+  ObjectView v;
+  v.footprintPx = 0.5 * kScreenPx;
+  EXPECT_EQ(viewClassOf(v, kScreenPx), ViewClass::CloseUp);
+  v.footprintPx = 2000;
+  EXPECT_EQ(viewClassOf(v, kScreenPx), ViewClass::Rest);
+  v.deforming = true;
+  EXPECT_EQ(viewClassOf(v, kScreenPx), ViewClass::Deforming);
+  v.viewAngleDeg = 85;
+  EXPECT_EQ(viewClassOf(v, kScreenPx), ViewClass::Grazing);
+}
+
+}  // namespace
+}  // namespace tissue::quality

@@ -1,0 +1,104 @@
+// A scene under a frame budget (issue 16): the controller chooses each organ's method, a far
+// organ falls back to lit with wrap, the budget is refused when it is not a number of ms, and
+// the wrap term lights past the terminator. Needs GL (the scene's own headless context).
+#include <gtest/gtest.h>
+
+#include "tissue/scene/scene.h"
+
+namespace tissue::scene {
+namespace {
+
+const std::filesystem::path kData = TISSUE_TEST_DATA_DIR;
+
+Mat4 translation(Float3 t) {
+  Mat4 m = kIdentity4;
+  m[12] = t.x, m[13] = t.y, m[14] = t.z;
+  return m;
+}
+
+Scene threeLivers() {
+  SceneSettings settings;
+  settings.materials.textureRoots = {TISSUE_TEST_GENERATED_DATA_DIR, TISSUE_TEST_DATA_DIR};
+  settings.renderer.finishPasses = true;  // llvmpipe: the pass times are what the controller learns
+  auto scene = Scene::create({}, settings);
+  EXPECT_TRUE(scene.ok()) << (scene ? "" : scene.error().message);
+  for (float z : {0.0f, -600.0f, -6000.0f}) {
+    OrganDesc d;
+    d.mesh = kData / "meshes" / "liver.obj";
+    d.material = kData / "materials" / "liver.json";
+    d.model = translation({0.0f, 0.0f, z});
+    EXPECT_TRUE(scene->addOrgan(d).ok());
+  }
+  render::Camera cam;
+  cam.eye = {0.0f, 0.0f, 350.0f};
+  cam.target = {0.0f, 0.0f, 0.0f};
+  cam.farMm = 10000.0f;
+  scene->setCamera(cam);
+  return std::move(*scene);
+}
+
+double meanLevel(const Image8& image) {
+  double sum = 0.0;
+  for (std::uint8_t v : image.pixels)
+    sum += v;
+  return sum / double(image.pixels.size());
+}
+
+TEST(SceneBudget, TheControllerChoosesPerOrganAndTheFarOneFallsBackToWrap) {
+  Scene scene = threeLivers();
+  EXPECT_TRUE(scene.budgetChoices().empty());
+  ASSERT_TRUE(scene.setBudgetMs(1000.0).ok());
+  for (int f = 0; f < 3; ++f)
+    ASSERT_TRUE(scene.renderImage(240, 180).ok());
+  const auto& choices = scene.budgetChoices();
+  ASSERT_EQ(choices.size(), 3u);
+  EXPECT_GT(choices[0].footprintPx, choices[1].footprintPx);
+  EXPECT_GT(choices[1].footprintPx, choices[2].footprintPx);
+  EXPECT_TRUE(choices[2].fallback);
+  EXPECT_EQ(choices[2].method, "lit");
+  EXPECT_EQ(choices[2].setting, "wrap");
+  EXPECT_FALSE(choices[0].fallback);
+  EXPECT_EQ(choices[0].mesh.planes, choices[0].method == "ray-march");
+  // The controller has measured something.
+  ASSERT_NE(scene.qualityController(), nullptr);
+  int measured = 0;
+  for (const auto& c : scene.qualityController()->costs())
+    measured += c.samples > 0 ? 1 : 0;
+  EXPECT_GE(measured, 1);
+  // Off again: the choices go, the organs keep their methods.
+  ASSERT_TRUE(scene.setBudgetMs(0.0).ok());
+  EXPECT_TRUE(scene.budgetChoices().empty());
+  EXPECT_TRUE(scene.renderImage(240, 180).ok());
+}
+
+TEST(SceneBudget, ABudgetMustBeAFiniteNumberOfMs) {
+  Scene scene = threeLivers();
+  EXPECT_FALSE(scene.setBudgetMs(-1.0).ok());
+  EXPECT_FALSE(scene.setBudgetMs(std::nan("")).ok());
+  EXPECT_TRUE(scene.setBudgetMs(16.0).ok());
+  EXPECT_EQ(scene.budgetMs(), 16.0);
+}
+
+TEST(SceneBudget, WrapLightsPastTheTerminator) {
+  SceneSettings settings;
+  settings.materials.textureRoots = {TISSUE_TEST_GENERATED_DATA_DIR, TISSUE_TEST_DATA_DIR};
+  settings.quality.minFootprintPx = 1e12;  // every organ falls back to lit with wrap
+  auto scene = Scene::create({}, settings);
+  ASSERT_TRUE(scene.ok()) << scene.error().message;
+  OrganDesc d;
+  d.mesh = kData / "meshes" / "liver.obj";
+  d.material = kData / "materials" / "liver.json";
+  ASSERT_TRUE(scene->addOrgan(d).ok());  // lit, no wrap
+  auto plain = scene->renderImage(160, 120);
+  ASSERT_TRUE(plain.ok()) << plain.error().message;
+  ASSERT_TRUE(scene->setBudgetMs(1e4).ok());
+  auto wrapped = scene->renderImage(160, 120);
+  ASSERT_TRUE(wrapped.ok()) << wrapped.error().message;
+  ASSERT_EQ(scene->budgetChoices().size(), 1u);
+  EXPECT_EQ(scene->budgetChoices()[0].setting, "wrap");
+  // (N.L + w) / (1 + w) >= N.L: brighter where the light grazes, never darker.
+  EXPECT_GT(meanLevel(*wrapped), meanLevel(*plain) + 0.2);
+}
+
+}  // namespace
+}  // namespace tissue::scene
