@@ -2,7 +2,7 @@
 // on the data liver (data/meshes/liver.obj, 27.6k triangles, mm), single-threaded, and the path
 // tracer's sample rate on that liver with each. Prints median, p99 and worst rates over batches:
 //   tissue_truth_bench [--batches N] [--rays N] [--threads N] [--spp N] [--roulette W] [--tracer-only 1]
-//                      [--liver-material 1] [--bvh 0] [--spectral 0]
+//                      [--liver-material 1] [--bvh 0] [--spectral 0] [--local-majorants 0]
 // The random-walk rays start just inside the surface (a random point of a random triangle, 0.01 mm
 // in) with a random inward direction, as the walk's queries do; camera rays come from a pinhole
 // camera framing the liver. "nearest 1.1" is the layer-depth query: the nearest surface point
@@ -118,7 +118,7 @@ void printRates(const char* what, const char* backend, const std::vector<double>
 int main(int argc, char** argv) {
   int batches = 30, threads = 1, spp = 16;
   double roulette = -1.0;  // < 0: the default
-  bool tracerOnly = false, liverMaterial = false, withBvh = true, spectral = true;
+  bool tracerOnly = false, liverMaterial = false, withBvh = true, spectral = true, localMajorants = true;
   std::size_t rayCount = 200000;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--batches")) batches = std::atoi(argv[i + 1]);
@@ -130,6 +130,7 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--liver-material")) liverMaterial = std::atoi(argv[i + 1]) != 0;
     if (!std::strcmp(argv[i], "--bvh")) withBvh = std::atoi(argv[i + 1]) != 0;
     if (!std::strcmp(argv[i], "--spectral")) spectral = std::atoi(argv[i + 1]) != 0;
+    if (!std::strcmp(argv[i], "--local-majorants")) localMajorants = std::atoi(argv[i + 1]) != 0;
   }
   const std::string path = std::string(TISSUE_BENCH_DATA_DIR) + "/meshes/liver.obj";
   auto mesh = mesh::loadMesh(path);
@@ -217,6 +218,7 @@ int main(int argc, char** argv) {
     s.surfaceRoughness = 0.17;
     if (roulette >= 0.0) s.rouletteWeight = roulette;
     s.spectral = spectral;
+    s.localMajorants = localMajorants;
     const double cpu0 = bench::cpuSeconds();
     auto image = truth::renderPathTraced(truthMesh, material, lights, camera, s);
     const double cpu = bench::cpuSeconds() - cpu0;
@@ -237,11 +239,16 @@ int main(int argc, char** argv) {
     }
     relativeNoise /= double(std::max<std::int64_t>(covered, 1));
     double noise2 = 0.0, signal2 = 0.0;  // the atlas's measure: sqrt(sum stderr^2 / sum radiance^2)
+    double bandNoise2[3] = {0, 0, 0}, bandSignal2[3] = {0, 0, 0};
     for (std::size_t i = 0; i < image->covered.size(); ++i)
       if (image->covered[i]) {
         const Float3 m = image->radiance[i], e = image->stderrs[i];
         noise2 += double(dot(e, e));
         signal2 += double(dot(m, m));
+        for (int c = 0; c < 3; ++c) {
+          bandNoise2[c] += double((&e.x)[c]) * double((&e.x)[c]);
+          bandSignal2[c] += double((&m.x)[c]) * double((&m.x)[c]);
+        }
       }
     const double pixelSamples = double(image->width * image->height) * image->samplesPerPixel;
     std::printf(
@@ -257,6 +264,19 @@ int main(int argc, char** argv) {
         // Efficiency: organ pixels brought to 1% noise per second, rate / samples needed, with the
         // samples needed (noise * sqrt(spp) / 0.01)^2.
         double(covered) / cpu / (1e4 * relativeNoise * relativeNoise), std::sqrt(noise2 / signal2));
+    // Per band: the share of the atlas measure's noise (stderr^2 over the sum of |radiance|^2) and
+    // the band's own relative noise; the per-sample relative variance noise^2 * spp; the depth
+    // queries per path; the atlas measure's figure of merit 1 / (noise^2 * CPU s per pixel sample).
+    std::printf("  per band noise^2 share R %.2f G %.2f B %.2f; own rel noise R %.3f G %.3f B %.3f\n",
+                bandNoise2[0] / noise2, bandNoise2[1] / noise2, bandNoise2[2] / noise2,
+                std::sqrt(bandNoise2[0] / bandSignal2[0]), std::sqrt(bandNoise2[1] / bandSignal2[1]),
+                std::sqrt(bandNoise2[2] / bandSignal2[2]));
+    std::printf(
+        "  per-sample rel variance %.3f, depth queries per path %.1f, next events per path %.1f, "
+        "efficiency 1/(var * CPU s per organ sample) %.0f\n",
+        noise2 / signal2 * image->samplesPerPixel, double(image->depthQueries) / double(image->paths),
+        double(image->nextEvents) / double(image->paths),
+        double(covered) * image->samplesPerPixel / cpu / (noise2 / signal2 * image->samplesPerPixel));
   }
   return 0;
 }

@@ -16,6 +16,7 @@
 #include "tissue/scene/organ_loop.h"
 #include "tissue/scene/organ_methods.h"
 #include "tissue/scene/truth_view.h"
+#include "tissue/studies/frame_radiance.h"
 
 namespace tissue::studies {
 namespace {
@@ -159,19 +160,6 @@ double median(std::vector<double> v) {
 }
 
 // The displayed linear radiance of the last frame: the composite's two terms.
-Result<std::vector<Float3>> linearFrame(render::Renderer& renderer) {
-  auto radiance = renderer.readFrame(render::FrameView::Radiance);
-  if (!radiance) return radiance.error();
-  auto blurred = renderer.readFrame(render::FrameView::BlurredDiffuse);
-  if (!blurred) return blurred.error();
-  std::vector<Float3> out(radiance->pixels.size());
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    const Float4 r = radiance->pixels[i], d = blurred->pixels[i];
-    out[i] = {r.x + d.x, r.y + d.y, r.z + d.z};
-  }
-  return out;
-}
-
 Image8 toneMapped(std::span<const Float3> linear, int width, int height) {
   Image8 img(width, height, 4);
   for (std::size_t i = 0; i < linear.size(); ++i) {
@@ -310,7 +298,7 @@ Result<AtlasResult> runAtlas(render::Renderer& renderer, const AtlasConfig& conf
           times.push_back(
               std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
       }
-      auto linear = linearFrame(renderer);
+      auto linear = lastFrameRadiance(renderer);
       if (!linear) return linear.error();
       const AtlasScore score = scoreAgainstTruth(truthLinear, *linear, T.covered);
       result.rows.push_back({method, s.name, frame.name, median(times), score.relRms, score.psnrDb,

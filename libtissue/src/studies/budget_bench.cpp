@@ -9,11 +9,13 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "atlas_detail.h"
 #include "json_text.h"
 #include "tissue/core/stopwatch.h"
 #include "tissue/scene/session.h"
 #include "tissue/scene/truth_view.h"
 #include "tissue/studies/atlas.h"
+#include "tissue/studies/frame_radiance.h"
 
 namespace tissue::studies {
 namespace {
@@ -58,51 +60,6 @@ double percentile(std::vector<double> v, double q) {
   return v[std::min(i, v.size() - 1)];
 }
 
-// The displayed linear radiance of the last frame: the composite's two terms (as the atlas scores).
-Result<std::vector<Float3>> displayedRadiance(render::Renderer& renderer) {
-  auto radiance = renderer.readFrame(render::FrameView::Radiance);
-  if (!radiance) return radiance.error();
-  auto blurred = renderer.readFrame(render::FrameView::BlurredDiffuse);
-  if (!blurred) return blurred.error();
-  std::vector<Float3> out(radiance->pixels.size());
-  for (std::size_t i = 0; i < out.size(); ++i)
-    out[i] = {radiance->pixels[i].x + blurred->pixels[i].x, radiance->pixels[i].y + blurred->pixels[i].y,
-              radiance->pixels[i].z + blurred->pixels[i].z};
-  return out;
-}
-
-// The truth image as raw arrays (the bench's cache; the file name says what it is of).
-void writeTruthImage(const std::filesystem::path& file, const truth::TruthImage& t) {
-  std::filesystem::create_directories(file.parent_path());
-  std::ofstream out(file, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(&t.width), sizeof t.width);
-  out.write(reinterpret_cast<const char*>(&t.height), sizeof t.height);
-  out.write(reinterpret_cast<const char*>(&t.samplesPerPixel), sizeof t.samplesPerPixel);
-  out.write(reinterpret_cast<const char*>(&t.seconds), sizeof t.seconds);
-  out.write(reinterpret_cast<const char*>(t.radiance.data()),
-            std::streamsize(t.radiance.size() * sizeof(Float3)));
-  out.write(reinterpret_cast<const char*>(t.stderrs.data()),
-            std::streamsize(t.stderrs.size() * sizeof(Float3)));
-  out.write(reinterpret_cast<const char*>(t.covered.data()), std::streamsize(t.covered.size()));
-}
-std::optional<truth::TruthImage> readTruthImage(const std::filesystem::path& file, int width, int height) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return std::nullopt;
-  truth::TruthImage t;
-  in.read(reinterpret_cast<char*>(&t.width), sizeof t.width);
-  in.read(reinterpret_cast<char*>(&t.height), sizeof t.height);
-  if (!in || t.width != width || t.height != height) return std::nullopt;
-  in.read(reinterpret_cast<char*>(&t.samplesPerPixel), sizeof t.samplesPerPixel);
-  in.read(reinterpret_cast<char*>(&t.seconds), sizeof t.seconds);
-  const std::size_t n = std::size_t(width) * std::size_t(height);
-  t.radiance.resize(n), t.stderrs.resize(n), t.covered.resize(n);
-  in.read(reinterpret_cast<char*>(t.radiance.data()), std::streamsize(n * sizeof(Float3)));
-  in.read(reinterpret_cast<char*>(t.stderrs.data()), std::streamsize(n * sizeof(Float3)));
-  in.read(reinterpret_cast<char*>(t.covered.data()), std::streamsize(n));
-  if (!in) return std::nullopt;
-  return t;
-}
-
 struct Bench {
   const BudgetBenchConfig& config;
   scene::Scene scene;
@@ -140,7 +97,7 @@ struct Bench {
     }
     r.frameMsMedian = percentile(ms, 0.5);
     r.frameMsP95 = percentile(ms, 0.95);
-    auto linear = displayedRadiance(scene.renderer());
+    auto linear = lastFrameRadiance(scene.renderer());
     if (!linear) return linear.error();
     const AtlasScore score = scoreAgainstTruth(truthLinear, *linear, truth->covered);
     r.relRms = score.relRms;
@@ -341,12 +298,16 @@ Result<BudgetBenchResult> runBudgetBench(const BudgetBenchConfig& config) {
     return p.seconds < config.truthSeconds;
   };
   std::optional<truth::TruthImage> cached;
-  if (!config.truthCache.empty()) cached = readTruthImage(config.truthCache, config.width, config.height);
+  if (!config.truthCache.empty()) {
+    cached = detail::readTruthCache(config.truthCache);  // the atlas's cache format, written atomically
+    if (cached && (cached->width != config.width || cached->height != config.height)) cached.reset();
+  }
   Result<truth::TruthImage> truthImage =
       cached ? Result<truth::TruthImage>(std::move(*cached)) : scene::renderTruth(all, world, frame, ts);
   if (!truthImage) return truthImage.error();
   if (cached) say("truth from " + config.truthCache.string());
-  if (!cached && !config.truthCache.empty()) writeTruthImage(config.truthCache, *truthImage);
+  if (!cached && !config.truthCache.empty())
+    if (auto w = detail::writeTruthCache(config.truthCache, *truthImage); !w) return w.error();
   BudgetBenchResult out;
   out.truthSpp = truthImage->samplesPerPixel;
   out.truthMs = 1e3 * truthImage->seconds;

@@ -229,6 +229,7 @@ Result<TruthImage> renderPathTraced(const TruthMesh& mesh, const TruthMaterial& 
       total.interactions += st.interactions;
       total.nextEvents += st.nextEvents;
       total.skippedEvents += st.skippedEvents;
+      total.depthQueries += st.depthQueries;
     };
     std::vector<std::thread> pool;
     try {
@@ -262,6 +263,7 @@ Result<TruthImage> renderPathTraced(const TruthMesh& mesh, const TruthMaterial& 
     image.interactions += st.interactions;
     image.nextEvents += st.nextEvents;
     image.skippedNextEvents += st.skippedEvents;
+    image.depthQueries += st.depthQueries;
   }
   image.paths = std::int64_t(pixels) * image.samplesPerPixel * (settings.spectral ? 1 : kBands);
   image.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -3,6 +3,7 @@
 #include "transport.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -24,6 +25,13 @@ constexpr double kDepthBallMm = 1.0;  // mm searched beyond the deepest boundary
 constexpr double kNeeRouletteWeight = 0.02;
 constexpr double kNeeReachOptical = 7.0;  // optical depths the depth queries look (e^-7 ~ 1e-3)
 constexpr double kMaxQueryRadiusMm = 50.0;
+// Local majorants: a segment that may meet layers of several classes is this long at most (then
+// re-examined), and the depth bounds of an earlier query are kept for a new segment when they
+// give it at least one mean free flight against its majorant (else a fresh query).
+constexpr double kMixedSegmentMm = 0.1;
+constexpr double kMinSegmentMm = 1e-3;
+// Layer depth ranges are widened by this much against the float arithmetic of the map lookups.
+constexpr double kRangeSlackMm = 1e-5;
 
 double maxOf(const Rgb& w) {
   return std::max({w[0], w[1], w[2]});
@@ -89,6 +97,43 @@ Transport::Transport(const RayMesh& rays, const TruthMesh& mesh, const TruthMate
   const double reach = weakest > 0.0 ? kNeeReachOptical / weakest : 0.0;
   m_neeRadiusMm = std::max(m_layerCount > 1 ? m_deepestBoundaryMm + kDepthBallMm : 0.0,
                            std::min(reach, kMaxQueryRadiusMm));
+  // Local majorants: the classes of equal coefficients and each layer's depth range anywhere.
+  for (std::size_t i = 0; i < m_layers.size(); ++i) {
+    int cls = -1;
+    for (std::size_t j = 0; j < i && cls < 0; ++j)
+      if (m_layers[j].sigmaT == m_layers[i].sigmaT && m_layers[j].sigmaS == m_layers[i].sigmaS &&
+          m_layers[j].g == m_layers[i].g)
+        cls = m_layerClass[j];
+    if (cls < 0) {
+      cls = int(m_classMajorant.size());
+      m_classMajorant.push_back(maxOf(m_layers[i].sigmaT));
+      m_classLayer.push_back(int(i));
+    }
+    m_layerClass.push_back(cls);
+  }
+  m_localMajorants = settings.localMajorants && m_classMajorant.size() <= 64;
+  const std::size_t boundaries = m_layers.size() - 1;
+  std::vector<double> lowest(boundaries, kInf), highest(boundaries, 0.0);  // mm, per boundary
+  if (m_perTexel) {
+    // Bilinear lookups stay within the texels' range; the ordering clamp raises a boundary to at
+    // most the largest of those above it.
+    const std::size_t stride = std::size_t(material.maps.mapCount) * 4;
+    for (std::size_t t = 0; t + stride <= material.maps.depths.size(); t += stride)
+      for (std::size_t c = 0; c < boundaries; ++c) {
+        const double v = double(material.maps.depths[t + c]) * double(material.depthScaleMm);
+        lowest[c] = std::min(lowest[c], v);
+        highest[c] = std::max(highest[c], v);
+      }
+    for (std::size_t c = 1; c < boundaries; ++c)
+      highest[c] = std::max(highest[c], highest[c - 1]);
+  } else {
+    for (std::size_t c = 0; c < boundaries; ++c)
+      lowest[c] = highest[c] = m_boundaryMm[c];
+  }
+  for (std::size_t i = 0; i < m_layers.size(); ++i) {
+    m_layerTopMm.push_back(i == 0 ? 0.0 : lowest[i - 1] - kRangeSlackMm);
+    m_layerBottomMm.push_back(i == boundaries ? kInf : highest[i] + kRangeSlackMm);
+  }
   for (const TruthLight& l : lights) {
     PreparedLight p;
     p.directional = l.type == TruthLightType::Directional;
@@ -113,6 +158,9 @@ Rgb Transport::trace(V o, V d, RandomStream& rng, PathStats& stats, PathScratch&
   double toBoundary = 0.0;  // mm along d from o to the boundary (inside)
   std::uint32_t boundaryTriangle = 0;
   DepthCache cache;
+  cache.queries = &stats.depthQueries;
+  Segment segment;
+  double segmentLeft = 0.0;  // mm of the current segment ahead of o (0: make a new one)
   for (int events = 0;; ++events) {
     if (events >= m_settings.maxInteractions) {
       ++stats.capped;
@@ -159,29 +207,45 @@ Rgb Transport::trace(V o, V d, RandomStream& rng, PathStats& stats, PathScratch&
       toBoundary = hitDistance(*hit, o, d);
       boundaryTriangle = hit->triangle;
       needRay = false;
+      segmentLeft = 0.0;
     }
-    const double flight = m_majorant > 0.0 ? -std::log(rng.uniform()) / m_majorant : kInf;
+    if (segmentLeft <= 0.0) {
+      segment = segmentAt(o, toBoundary, cache);
+      segmentLeft = segment.lengthMm;
+    }
+    const double majorant = segment.majorant;
+    const double flight = majorant > 0.0 ? -std::log(rng.uniform()) / majorant : kInf;
+    if (flight >= segmentLeft && segmentLeft < toBoundary) {
+      // The segment ends first: the free path restarts there against the next segment's
+      // majorant (the exponential is memoryless).
+      o += segmentLeft * d;
+      toBoundary -= segmentLeft;
+      segmentLeft = 0.0;
+      continue;
+    }
     if (flight < toBoundary) {
       // Spectral tracking (Kutz et al. 2017, §5.2, history-aware): real with the probability
       // of the weighted mean sigma_t, each band reweighted by its own over the one drawn with.
       o += flight * d;
       toBoundary -= flight;
-      const LayerBands& layer = m_layers[static_cast<std::size_t>(layerAt(o, cache))];
+      segmentLeft -= flight;
+      const int layerIndex = segment.layer >= 0 ? segment.layer : layerAt(o, cache);
+      const LayerBands& layer = m_layers[static_cast<std::size_t>(layerIndex)];
       const Rgb carried = withDirections(w, ratio);
       const double sumW = carried[0] + carried[1] + carried[2];
       if (!(sumW > 0.0)) break;
       const double pReal =
           (carried[0] * layer.sigmaT[0] + carried[1] * layer.sigmaT[1] + carried[2] * layer.sigmaT[2]) /
-          (m_majorant * sumW);
+          (majorant * sumW);
       if (rng.uniform() > pReal) {  // null collision
         for (std::size_t b = 0; b < 3; ++b)
-          w[b] *= (1.0 - layer.sigmaT[b] / m_majorant) / (1.0 - pReal);
+          w[b] *= (1.0 - layer.sigmaT[b] / majorant) / (1.0 - pReal);
         continue;
       }
       ++stats.interactions;
       // The real collision's probability ratio times the albedo (collision estimator).
       for (std::size_t b = 0; b < 3; ++b)
-        w[b] *= layer.sigmaS[b] / (m_majorant * pReal);
+        w[b] *= layer.sigmaS[b] / (majorant * pReal);
       const Rgb nee = nextEvent(o, d, layer, withDirections(w, ratio), rng, cache, scratch, stats);
       for (std::size_t b = 0; b < 3; ++b)
         radiance[b] += nee[b];
@@ -189,6 +253,7 @@ Rgb Transport::trace(V o, V d, RandomStream& rng, PathStats& stats, PathScratch&
       d = scatter(d, layer, hero, ratio, rng);
       if (oneBand) ratio = {1.0, 1.0, 1.0};
       needRay = true;
+      segmentLeft = 0.0;
       // Russian roulette on the largest band's weight: survive with probability w / threshold.
       const double wMax = maxOf(withDirections(w, ratio));
       if (wMax < m_settings.rouletteWeight) {
@@ -237,7 +302,67 @@ double Transport::hitDistance(const MeshHit& hit, const V& o, const V& d) const 
 void Transport::refreshDepth(const V& p, DepthCache& cache) const {
   const double radius = std::max(m_neeRadiusMm, 1e-6);
   const std::optional<SurfacePoint> found = m_rays.nearest(arr(p), radius);
-  cache = {p, found ? found->distanceMm : radius, found.has_value(), true};
+  if (cache.queries) ++*cache.queries;
+  cache.x = p;
+  cache.depthMm = found ? found->distanceMm : radius;
+  cache.exact = found.has_value();
+  cache.valid = true;
+}
+
+// The depth range [lo, hi] of p from the cache's query (1-Lipschitz); none: [0, inf).
+void Transport::depthInterval(const V& p, const DepthCache& cache, double& lo, double& hi) const {
+  lo = 0.0;
+  hi = kInf;
+  if (!cache.valid) return;
+  const double s = glm::length(p - cache.x);
+  lo = std::max(0.0, cache.depthMm - s);
+  if (cache.exact) hi = cache.depthMm + s;
+}
+
+// The classes of the layers whose depth range meets [lo, hi], as a bit mask.
+std::uint64_t Transport::classesIn(double lo, double hi) const {
+  std::uint64_t mask = 0;
+  for (std::size_t i = 0; i < m_layers.size(); ++i)
+    if (m_layerTopMm[i] <= hi && m_layerBottomMm[i] >= lo) mask |= std::uint64_t(1) << m_layerClass[i];
+  return mask;
+}
+
+// The segment from a point whose depth lies in [lo, hi]: as long as the depths it can reach,
+// [lo - L, hi + L], meet no layer of another class (at most maxLengthMm; kMixedSegmentMm where
+// several classes are possible already).
+Transport::Segment Transport::segmentFrom(double lo, double hi, double maxLengthMm) const {
+  std::uint64_t mask = classesIn(lo, hi);
+  double length = maxLengthMm;
+  for (std::size_t j = 0; j < m_layers.size(); ++j) {
+    if (mask & (std::uint64_t(1) << m_layerClass[j])) continue;
+    length = std::min(length, m_layerBottomMm[j] < lo ? lo - m_layerBottomMm[j] : m_layerTopMm[j] - hi);
+  }
+  if (std::popcount(mask) > 1) length = std::min(length, kMixedSegmentMm);
+  if (length < std::min(kMinSegmentMm, maxLengthMm)) {
+    length = std::min(kMinSegmentMm, maxLengthMm);
+    mask = classesIn(std::max(0.0, lo - length), hi + length);
+  }
+  Segment segment{length, 0.0, -1};
+  for (std::size_t c = 0; c < m_classMajorant.size(); ++c)
+    if (mask & (std::uint64_t(1) << c)) segment.majorant = std::max(segment.majorant, m_classMajorant[c]);
+  if (std::popcount(mask) == 1) segment.layer = m_classLayer[std::size_t(std::countr_zero(mask))];
+  return segment;
+}
+
+// The segment of the ray from p (at most maxLengthMm): from the cache's depth bounds where they
+// give a one-class segment of at least a mean free flight, else from a fresh query at p.
+Transport::Segment Transport::segmentAt(const V& p, double maxLengthMm, DepthCache& cache) const {
+  if (!m_localMajorants) return {maxLengthMm, m_majorant, m_layerCount == 1 ? 0 : -1};
+  if (m_classMajorant.size() == 1) return {maxLengthMm, m_classMajorant[0], 0};
+  double lo = 0.0, hi = kInf;
+  if (cache.valid) {
+    depthInterval(p, cache, lo, hi);
+    const Segment s = segmentFrom(lo, hi, maxLengthMm);
+    if (s.layer >= 0 && s.lengthMm * s.majorant >= std::min(1.0, maxLengthMm * s.majorant)) return s;
+  }
+  refreshDepth(p, cache);
+  depthInterval(p, cache, lo, hi);
+  return segmentFrom(lo, hi, maxLengthMm);
 }
 
 // The layer at interior point p: by its depth. The depth is 1-Lipschitz, so a query at x bounds
@@ -248,13 +373,22 @@ int Transport::layerAt(const V& p, DepthCache& cache) const {
   if (cache.valid) {
     const double s = glm::length(p - cache.x);
     if (cache.depthMm - s > m_deepestBoundaryMm) return m_layerCount - 1;
-    if (cache.exact && !m_perTexel) {
+    if (m_localMajorants) {  // every layer the depth bounds allow has the same coefficients
+      double lo = 0.0, hi = kInf;
+      depthInterval(p, cache, lo, hi);
+      const std::uint64_t mask = classesIn(lo, hi);
+      if (std::popcount(mask) == 1) return m_classLayer[std::size_t(std::countr_zero(mask))];
+    } else if (cache.exact && !m_perTexel) {
       const int lo = constantDepthLayer(std::max(0.0, cache.depthMm - s));
       if (lo == constantDepthLayer(cache.depthMm + s)) return lo;
     }
   }
   const std::optional<SurfacePoint> found = m_rays.nearest(arr(p), m_neeRadiusMm);
-  cache = {p, found ? found->distanceMm : m_neeRadiusMm, found.has_value(), true};
+  if (cache.queries) ++*cache.queries;
+  cache.x = p;
+  cache.depthMm = found ? found->distanceMm : m_neeRadiusMm;
+  cache.exact = found.has_value();
+  cache.valid = true;
   if (!found || found->distanceMm > m_deepestBoundaryMm) return m_layerCount - 1;
   const SurfacePoint& np = *found;
   if (!m_perTexel) return constantDepthLayer(np.distanceMm);
@@ -274,7 +408,8 @@ int Transport::constantDepthLayer(double depthMm) const {
 }
 
 // Transmittance per band along x + t dir, t in [0, length]: exact in one layer, ratio tracking
-// (Cramer 1978; Novák et al. 2014) against the common majorant in several.
+// (Cramer 1978; Novák et al. 2014) against the common majorant in several; with local majorants,
+// exact along each one-class segment and ratio tracking against the segment's majorant elsewhere.
 Rgb Transport::transmittance(const V& x, const V& dir, double length, RandomStream& rng,
                              DepthCache& cache) const {
   if (m_layerCount == 1) {
@@ -282,6 +417,29 @@ Rgb Transport::transmittance(const V& x, const V& dir, double length, RandomStre
     return {std::exp(-s[0] * length), std::exp(-s[1] * length), std::exp(-s[2] * length)};
   }
   Rgb tr{1.0, 1.0, 1.0};
+  if (m_localMajorants) {
+    double t = 0.0;
+    while (length - t > 1e-12) {
+      const V start = x + t * dir;
+      const Segment seg = segmentAt(start, length - t, cache);
+      if (seg.layer >= 0) {
+        const Rgb& s = m_layers[std::size_t(seg.layer)].sigmaT;
+        for (std::size_t b = 0; b < 3; ++b)
+          tr[b] *= std::exp(-s[b] * seg.lengthMm);
+      } else {
+        for (double u = 0.0;;) {
+          u -= std::log(rng.uniform()) / seg.majorant;
+          if (u >= seg.lengthMm) break;
+          const Rgb& s = m_layers[static_cast<std::size_t>(layerAt(start + u * dir, cache))].sigmaT;
+          for (std::size_t b = 0; b < 3; ++b)
+            tr[b] *= 1.0 - s[b] / seg.majorant;
+          if (allZero(tr)) return tr;
+        }
+      }
+      t += seg.lengthMm;
+    }
+    return tr;
+  }
   if (m_majorant <= 0.0) return tr;
   double t = 0.0;
   while (true) {

@@ -11,6 +11,16 @@
 // boundary (Fresnel, Snell) does not depend on the band. Next-event estimation shares its
 // connection through the boundary between the bands and is itself Russian-rouletted where the
 // collision is so deep that every band's transmittance bound is small.
+//
+// Local majorants (Yue et al. 2010, "Unbiased, adaptive stochastic sampling for rendering
+// inhomogeneous participating media", piecewise-constant majorants along the ray; Novák et al.
+// 2018, "Monte Carlo methods for volumetric light transport simulation", §3 and §6): the layer at
+// a point depends on its depth only through each layer's depth range over the whole map, and the
+// depth is 1-Lipschitz, so one nearest-surface query bounds the depth over a ball around it. A
+// ray is tracked in segments, each inside such a ball, against the largest extinction of the
+// layers the segment may meet; where those layers all have the same coefficients (the
+// parenchyma above and below the liver's vessels) the segment needs no further query and its
+// transmittance is exact. Free paths restart at each segment's end (memoryless): unbiased.
 
 #include <array>
 #include <cstdint>
@@ -33,6 +43,7 @@ struct PathStats {
   std::int64_t interactions = 0;
   std::int64_t nextEvents = 0;     ///< light connections traced
   std::int64_t skippedEvents = 0;  ///< light connections ended by their Russian roulette
+  std::int64_t depthQueries = 0;   ///< nearest-surface queries (layer depths)
 };
 
 /// Per-thread, per-pixel scratch: the last connection normal per light (the next collision's
@@ -79,12 +90,24 @@ class Transport {
     double depthMm = 0.0;  // its depth, mm (a lower bound when not exact)
     bool exact = false;
     bool valid = false;
+    std::int64_t* queries = nullptr;  // the path's tally of queries
+  };
+  // A piece of a ray from its start: its length, the majorant of every point on it, and the
+  // layer whose coefficients hold all along it (-1: look the layer up at each collision).
+  struct Segment {
+    double lengthMm = 0.0;
+    double majorant = 0.0;
+    int layer = -1;
   };
 
   double hitDistance(const MeshHit& hit, const glm::dvec3& o, const glm::dvec3& d) const;
   void refreshDepth(const glm::dvec3& p, DepthCache& cache) const;
   int layerAt(const glm::dvec3& p, DepthCache& cache) const;
   int constantDepthLayer(double depthMm) const;
+  void depthInterval(const glm::dvec3& p, const DepthCache& cache, double& lo, double& hi) const;
+  std::uint64_t classesIn(double lo, double hi) const;
+  Segment segmentFrom(double lo, double hi, double maxLengthMm) const;
+  Segment segmentAt(const glm::dvec3& p, double maxLengthMm, DepthCache& cache) const;
   Rgb transmittance(const glm::dvec3& x, const glm::dvec3& dir, double length,
                     optics::detail::RandomStream& rng, DepthCache& cache) const;
   bool occluded(const glm::dvec3& from, const glm::dvec3& dir, double maxT) const;
@@ -103,6 +126,13 @@ class Transport {
   std::vector<glm::dvec3> m_faceNormal;
   std::vector<glm::dvec3> m_faceVertex;  // each triangle's first vertex, mm
   std::vector<LayerBands> m_layers;
+  // Local majorants: each layer's class (layers with equal coefficients share one), the depth
+  // range it may occupy anywhere on the map (mm), each class's majorant and first layer.
+  std::vector<int> m_layerClass;
+  std::vector<double> m_layerTopMm, m_layerBottomMm;
+  std::vector<double> m_classMajorant;
+  std::vector<int> m_classLayer;
+  bool m_localMajorants = false;
   double m_majorant = 0.0;     // mm^-1, the largest sigma_t over bands and layers
   Rgb m_sigmaTMin{};           // mm^-1, per band the smallest sigma_t over the layers
   double m_neeRadiusMm = 0.0;  // mm, how deep the depth queries look (the roulette's reach)

@@ -117,6 +117,10 @@ struct PathTraceSettings {
   /// Russian roulette where the path's largest band weight w falls below this: it survives with
   /// probability w / rouletteWeight and then carries rouletteWeight.
   double rouletteWeight = 0.1;
+  /// true: track against local majorants (Yue et al. 2010; transport.h), segments of the ray
+  /// whose depth range can only meet some layers; false: one majorant over every layer and band
+  /// (the same estimator, more null collisions and depth queries). Both are unbiased.
+  bool localMajorants = true;
   /// After each pass; return false to stop early (the image then holds the passes done). Empty:
   /// no reports. The library never writes to stderr itself.
   std::function<bool(const PathTraceProgress&)> onPass;
@@ -137,6 +141,7 @@ struct TruthImage {
   std::int64_t interactions = 0;               ///< real collisions, all paths
   std::int64_t nextEvents = 0;                 ///< light connections traced at real collisions
   std::int64_t skippedNextEvents = 0;          ///< light connections ended by their Russian roulette
+  std::int64_t depthQueries = 0;               ///< nearest-surface queries for the layer depths
   double seconds = 0.0;                        ///< wall-clock time, s
   int threads = 1;                             ///< worker threads used
   Intersector intersector = Intersector::Bvh;  ///< the back end that answered
