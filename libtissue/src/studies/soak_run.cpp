@@ -100,8 +100,9 @@ Result<std::string> soakSession(const SoakConfig& o, const scene::SceneSettings&
           {i + 1, residentSetKb().value_or(0), heapInUseKb().value_or(0), gl::countLiveObjects(**gl)});
       if (o.onProgress) {
         char line[160];
-        std::snprintf(line, sizeof line, "soak: frame %ld of %ld, rss %lld kB, %d GL objects", i + 1,
-                      o.frames, static_cast<long long>(samples.back().rssKb), samples.back().objects.total());
+        std::snprintf(line, sizeof line, "soak: frame %ld of %ld, rss %lld kB, heap %lld kB, %d GL objects",
+                      i + 1, o.frames, static_cast<long long>(samples.back().rssKb),
+                      static_cast<long long>(samples.back().heapKb), samples.back().objects.total());
         o.onProgress(line);
       }
     }
@@ -136,6 +137,7 @@ Result<std::string> soakSession(const SoakConfig& o, const scene::SceneSettings&
       {"height", o.height},
       {"frame_ms", detail::msSummary(frameMs)},
       {"rss_kb", {{"after_warmup", base->rssKb}, {"end", last.rssKb}, {"max", rssMax}, {"growth", growth}}},
+      {"heap_kb", {{"after_warmup", base->heapKb}, {"end", last.heapKb}}},
       {"gl_objects",
        {{"after_warmup", base->objects.total()},
         {"end", last.objects.total()},
