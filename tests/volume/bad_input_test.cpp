@@ -127,6 +127,20 @@ TEST(VolumeBadInput, HugePointCountFailsAtOnce) {
       "hugepoints.vtk:5: POINTS declares 1000000000000 points");
 }
 
+// VTK 9.1's legacy reader writes through a null buffer when the cells do not fill the declared
+// integers (the VTK fuzzer's SEGV: "CELLS 240 0"); the cells are checked before VTK reads them.
+TEST(VolumeBadInput, CellsThatDoNotFillTheirIntegersAreOneLineNotACrash) {
+  const std::string cells = "4 0 1 2 3\n4 1 2 3 4\n";
+  expectError("cells_zero.vtk", legacyVtk("", 240, 0, "10\n10\n"),
+              "cells_zero.vtk:11: CELLS declares 240 cells in 0 integers, but cell 1 does not fit in them");
+  expectError("cells_short.vtk", legacyVtk(cells, 3, 10, "10\n10\n10\n"),
+              "cells_short.vtk:11: CELLS declares 3 cells in 10 integers, but cell 3 does not fit in them");
+  expectError("cells_over.vtk", legacyVtk("4 0 1 2 3\n9 1 2 3 4\n", 2, 10, "10\n10\n"),
+              "cells_over.vtk:11: CELLS declares 2 cells in 10 integers, but cell 2 does not fit in them");
+  expectError("cells_spare.vtk", legacyVtk("3 0 1 2\n4 1 2 3 4\n0\n", 2, 10, "10\n10\n"),
+              "cells_spare.vtk:11: CELLS declares 2 cells in 10 integers, but its cells hold 9");
+}
+
 TEST(VolumeBadInput, MissingFileAndUnknownExtension) {
   auto missing = loadTetMesh(std::filesystem::path(TISSUE_TEST_OUTPUT_DIR) / "volume" / "absent.vtu");
   ASSERT_FALSE(missing.ok());

@@ -196,6 +196,30 @@ Result<void> checkTextCellSections(const std::filesystem::path& path, const std:
     pos = save;
     line = saveLine;
     if (auto ok = needIntegers(std::uint64_t(b), section, at); !ok) return ok;
+    // The legacy layout: a cells, each "n id_1 .. id_n", b integers in all. VTK 9.1's readers
+    // crash when the cells do not fill the b integers exactly ("CELLS 240 0": a null buffer
+    // written; found by the VTK fuzzer), so the cells are walked too, over the integers counted.
+    const std::size_t end = pos, endLine = line;
+    pos = save;
+    line = saveLine;
+    const auto total = std::uint64_t(b);
+    std::uint64_t used = 0;
+    for (std::uint64_t c = 0; c < std::uint64_t(a); ++c) {
+      const long long n = used < total ? std::stoll(std::string(next())) : -1;
+      if (n < 0 || std::uint64_t(n) >= total - used)
+        return Error{path.string() + ":" + std::to_string(at) + ": " + section + " declares " +
+                     std::to_string(a) + " cells in " + std::to_string(b) + " integers, but cell " +
+                     std::to_string(c + 1) + " does not fit in them; fix the counts"};
+      for (long long k = 0; k < n; ++k)
+        next();
+      used += 1 + std::uint64_t(n);
+    }
+    if (used != total)
+      return Error{path.string() + ":" + std::to_string(at) + ": " + section + " declares " +
+                   std::to_string(a) + " cells in " + std::to_string(b) + " integers, but its cells hold " +
+                   std::to_string(used) + "; fix the counts"};
+    pos = end;
+    line = endLine;
   }
   return {};
 }
