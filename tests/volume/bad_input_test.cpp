@@ -5,6 +5,7 @@
 
 #include "test_files.h"
 #include "tissue/volume/tet_mesh.h"
+#include "tissue/volume/vtk_surface.h"
 
 namespace tissue::volume {
 namespace {
@@ -139,6 +140,19 @@ TEST(VolumeBadInput, CellsThatDoNotFillTheirIntegersAreOneLineNotACrash) {
               "cells_over.vtk:11: CELLS declares 2 cells in 10 integers, but cell 2 does not fit in them");
   expectError("cells_spare.vtk", legacyVtk("3 0 1 2\n4 1 2 3 4\n0\n", 2, 10, "10\n10\n"),
               "cells_spare.vtk:11: CELLS declares 2 cells in 10 integers, but its cells hold 9");
+}
+
+// A file that ends right after "DATASET" (the VTK fuzzer: the sniffing threw std::out_of_range).
+TEST(VolumeBadInput, AFileEndingAtDatasetIsOneLine) {
+  for (const char* name : {"ends_at_dataset.vtk", "ends_at_dataset_space.vtk"}) {
+    const std::string text = std::string("# vtk DataFile Version 3.0\nt\nASCII\nDATASET") +
+                             (std::string(name).find("space") != std::string::npos ? " " : "");
+    auto mesh = loadTetMesh(writeTestFile(name, text));
+    ASSERT_FALSE(mesh.ok());
+    EXPECT_NE(mesh.error().message.find(name), std::string::npos) << mesh.error().message;
+    EXPECT_EQ(mesh.error().message.find('\n'), std::string::npos) << mesh.error().message;
+    EXPECT_FALSE(isVtkSurfacePath(writeTestFile(name, text)));
+  }
 }
 
 TEST(VolumeBadInput, MissingFileAndUnknownExtension) {

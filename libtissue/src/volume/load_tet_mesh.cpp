@@ -129,7 +129,9 @@ VtkContent sniffVtk(const std::filesystem::path& path) {
                  [](unsigned char c) { return char(std::toupper(c)); });
   const auto dataset = upper.find("\nDATASET");
   if (dataset == std::string::npos) return VtkContent::Unknown;
-  std::string kind = upper.substr(dataset + 9, upper.find('\n', dataset + 1) - (dataset + 9));
+  // "\nDATASET" may end the 4 kB read: substr past the end would throw (the VTK fuzzer).
+  const std::size_t from = std::min(dataset + 9, upper.size());
+  std::string kind = upper.substr(from, upper.find('\n', dataset + 1) - from);
   kind.erase(0, kind.find_first_not_of(" \t"));
   kind.erase(kind.find_last_not_of(" \t\r") + 1);
   if (kind == "POLYDATA") return VtkContent::LegacySurface;
