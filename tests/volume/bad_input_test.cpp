@@ -138,6 +138,11 @@ TEST(VolumeBadInput, CellsThatDoNotFillTheirIntegersAreOneLineNotACrash) {
               "cells_short.vtk:11: CELLS declares 3 cells in 10 integers, but cell 3 does not fit in them");
   expectError("cells_over.vtk", legacyVtk("4 0 1 2 3\n9 1 2 3 4\n", 2, 10, "10\n10\n"),
               "cells_over.vtk:11: CELLS declares 2 cells in 10 integers, but cell 2 does not fit in them");
+  // VTK reads a keyword by its prefix, in any case: "CELLSPOINTS 5 0" is CELLS to it.
+  std::string prefixed = legacyVtk(cells, 2, 10, "10\n10\n");
+  prefixed.replace(prefixed.find("CELLS 2 10"), 10, "cellsPOINTS 5 0");
+  expectError("cells_prefix.vtk", prefixed,
+              "cells_prefix.vtk:11: CELLS declares 5 cells in 0 integers, but cell 1 does not fit in them");
   expectError("cells_spare.vtk", legacyVtk("3 0 1 2\n4 1 2 3 4\n0\n", 2, 10, "10\n10\n"),
               "cells_spare.vtk:11: CELLS declares 2 cells in 10 integers, but its cells hold 9");
 }

@@ -172,10 +172,18 @@ Result<void> checkTextCellSections(const std::filesystem::path& path, const std:
     return {};
   };
   for (auto token = next(); !token.empty(); token = next()) {
-    const bool cells = token == "VERTICES" || token == "LINES" || token == "POLYGONS" ||
-                       token == "TRIANGLE_STRIPS" || token == "CELLS";
-    if (!cells && token != "CELL_TYPES") continue;
-    const std::string section(token);
+    // VTK matches its keywords by a case-blind prefix (strncmp of the lower-cased word), so
+    // "CELLSPOINTS" is a CELLS section to it (the VTK fuzzer); the same rule here.
+    std::string upper(token);
+    std::transform(upper.begin(), upper.end(), upper.begin(),
+                   [](unsigned char c) { return char(std::toupper(c)); });
+    std::string section;
+    for (const char* keyword : {"CELL_TYPES", "CELLS", "VERTICES", "LINES", "POLYGONS", "TRIANGLE_STRIPS"})
+      if (upper.rfind(keyword, 0) == 0) {
+        section = keyword;
+        break;
+      }
+    if (section.empty()) continue;
     const std::size_t at = line;
     const auto first = next();
     long long a = 0, b = 0;
