@@ -143,6 +143,11 @@ TEST(VolumeBadInput, CellsThatDoNotFillTheirIntegersAreOneLineNotACrash) {
   prefixed.replace(prefixed.find("CELLS 2 10"), 10, "cellsPOINTS 5 0");
   expectError("cells_prefix.vtk", prefixed,
               "cells_prefix.vtk:11: CELLS declares 5 cells in 0 integers, but cell 1 does not fit in them");
+  // A coordinate glued to a keyword: VTK 9.1 went on reading "CELLS0 10 0" as a CELLS section.
+  std::string glued = legacyVtk(cells, 2, 10, "10\n10\n");
+  glued.replace(glued.find("1 0 0\n"), 6, "10CELLS0 10 0\n");
+  expectError("points_glued.vtk", glued,
+              "points_glued.vtk:5: POINTS declares 5 points, but coordinate 4 is '10CELLS0'");
   expectError("cells_spare.vtk", legacyVtk("3 0 1 2\n4 1 2 3 4\n0\n", 2, 10, "10\n10\n"),
               "cells_spare.vtk:11: CELLS declares 2 cells in 10 integers, but its cells hold 9");
 }

@@ -147,6 +147,16 @@ bool isInteger(std::string_view token) {
   return ec == std::errc() && end == token.data() + token.size();
 }
 
+/// A coordinate as C++ streams read it (VTK's `>>`): an optional sign, digits, a point, an
+/// exponent; no "nan" or "inf", which the stream refuses.
+bool isNumber(std::string_view token) {
+  if (!token.empty() && (token[0] == '+' || token[0] == '-')) token.remove_prefix(1);
+  if (token.empty() || !(std::isdigit(static_cast<unsigned char>(token[0])) || token[0] == '.')) return false;
+  double v = 0;
+  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), v);
+  return ec == std::errc() && end == token.data() + token.size();
+}
+
 /// Text legacy VTK: each cell section must hold the integers its header declares. VTK 9.1's
 /// vtkPolyDataReader crashes (a null stream after it closes the file) on a cell section that
 /// ends early or holds a non-number, so the sections are counted before VTK reads the file.
@@ -183,6 +193,25 @@ Result<void> checkTextCellSections(const std::filesystem::path& path, const std:
         section = keyword;
         break;
       }
+    if (upper.rfind("POINTS", 0) == 0) {
+      // A coordinate that does not read as a number makes VTK go on reading keywords from
+      // inside it ("10CELLS0 10 0" turned into CELLS 10 0, a SIGSEGV; the VTK fuzzer).
+      const std::size_t at = line;
+      const auto count = next();
+      next();  // the type
+      long long n = 0;
+      if (!isInteger(count) || (n = std::stoll(std::string(count))) < 0) continue;  // VTK reports it
+      const std::uint64_t values = std::min<std::uint64_t>(std::uint64_t(n), text.size()) * 3;
+      for (std::uint64_t k = 0; k < values; ++k) {
+        const auto value = next();
+        if (value.empty()) break;  // truncated: VTK reports it, with nothing left to misread
+        if (!isNumber(value))
+          return Error{path.string() + ":" + std::to_string(at) + ": POINTS declares " + std::to_string(n) +
+                       " points, but coordinate " + std::to_string(k + 1) + " is '" + std::string(value) +
+                       "'; the file is damaged"};
+      }
+      continue;
+    }
     if (section.empty()) continue;
     const std::size_t at = line;
     const auto first = next();
