@@ -126,6 +126,10 @@ TEST(VolumeBadInput, HugePointCountFailsAtOnce) {
       "hugepoints.vtk",
       "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 1000000000000 double\n0 0 0\n",
       "hugepoints.vtk:5: POINTS declares 1000000000000 points");
+  expectError(
+      "hugerpoints.vtk",  // beyond any integer (the VTK fuzzer's UBSan finding)
+      "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 1.1e29 double\n0 0 0\n",
+      "hugerpoints.vtk:5: POINTS declares 1.1e+29 points");
 }
 
 // VTK 9.1's legacy reader writes through a null buffer when the cells do not fill the declared
