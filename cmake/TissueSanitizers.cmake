@@ -1,6 +1,6 @@
 # TISSUE_SANITIZE: sanitizers for every target of the tree, e.g. "address,undefined" (ASan with
 # LSan, and UBSan). scripts/run-tests.sh builds its second tree this way (tests/package/
-# sanitized_build.sh); findings stop the test (-fno-sanitize-recover), and line tables (-g1) give
+# no_vtk_build.sh, build-san/); findings stop the test (-fno-sanitize-recover), and line tables (-g1) give
 # the reports file:line. Everything is compiled with the flags, so no uninstrumented tissue code
 # runs; the system libraries (Mesa, glibc) are not instrumented and their leaks are suppressed by
 # tests/sanitizers/lsan.supp.

@@ -375,6 +375,19 @@ TEST(LoadMesh, PlyHugeDeclaredCountFailsAtOnce) {
   EXPECT_EQ(msg.find('\n'), std::string::npos);
 }
 
+TEST(LoadMesh, PlyListLengthBeyondAnyIntegerFailsInOneLine) {
+  // A text list length too large for any integer (the PLY fuzzer's UBSan finding: 1e126 was
+  // converted to an unsigned count before the size check).
+  for (const char* length : {"1e126", "18446744073709551616", "9223372036854775808"}) {
+    std::string ply = kQuadPly;
+    ply.replace(ply.rfind("3 0 2 3"), 1, length);
+    const auto msg = loadError(writeTestFile("long_list.ply", ply));
+    EXPECT_NE(msg.find("long_list.ply:"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("list 'vertex_indices' declares"), std::string::npos) << msg;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+  }
+}
+
 TEST(LoadMesh, UnsupportedExtensionAndMissingFile) {
   EXPECT_NE(loadError(writeTestFile("mesh.xyz", "1 2 3\n")).find("unsupported extension"), std::string::npos);
   EXPECT_NE(loadError("/nonexistent/mesh.obj").find("no such file"), std::string::npos);

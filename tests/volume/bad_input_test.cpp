@@ -5,6 +5,7 @@
 
 #include "test_files.h"
 #include "tissue/volume/tet_mesh.h"
+#include "tissue/volume/vtk_surface.h"
 
 namespace tissue::volume {
 namespace {
@@ -125,6 +126,47 @@ TEST(VolumeBadInput, HugePointCountFailsAtOnce) {
       "hugepoints.vtk",
       "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 1000000000000 double\n0 0 0\n",
       "hugepoints.vtk:5: POINTS declares 1000000000000 points");
+  expectError(
+      "hugerpoints.vtk",  // beyond any integer (the VTK fuzzer's UBSan finding)
+      "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 1.1e29 double\n0 0 0\n",
+      "hugerpoints.vtk:5: POINTS declares 1.1e+29 points");
+}
+
+// VTK 9.1's legacy reader writes through a null buffer when the cells do not fill the declared
+// integers (the VTK fuzzer's SEGV: "CELLS 240 0"); the cells are checked before VTK reads them.
+TEST(VolumeBadInput, CellsThatDoNotFillTheirIntegersAreOneLineNotACrash) {
+  const std::string cells = "4 0 1 2 3\n4 1 2 3 4\n";
+  expectError("cells_zero.vtk", legacyVtk("", 240, 0, "10\n10\n"),
+              "cells_zero.vtk:11: CELLS declares 240 cells in 0 integers, but cell 1 does not fit in them");
+  expectError("cells_short.vtk", legacyVtk(cells, 3, 10, "10\n10\n10\n"),
+              "cells_short.vtk:11: CELLS declares 3 cells in 10 integers, but cell 3 does not fit in them");
+  expectError("cells_over.vtk", legacyVtk("4 0 1 2 3\n9 1 2 3 4\n", 2, 10, "10\n10\n"),
+              "cells_over.vtk:11: CELLS declares 2 cells in 10 integers, but cell 2 does not fit in them");
+  // VTK reads a keyword by its prefix, in any case: "CELLSPOINTS 5 0" is CELLS to it.
+  std::string prefixed = legacyVtk(cells, 2, 10, "10\n10\n");
+  prefixed.replace(prefixed.find("CELLS 2 10"), 10, "cellsPOINTS 5 0");
+  expectError("cells_prefix.vtk", prefixed,
+              "cells_prefix.vtk:11: CELLS declares 5 cells in 0 integers, but cell 1 does not fit in them");
+  // A coordinate glued to a keyword: VTK 9.1 went on reading "CELLS0 10 0" as a CELLS section.
+  std::string glued = legacyVtk(cells, 2, 10, "10\n10\n");
+  glued.replace(glued.find("1 0 0\n"), 6, "10CELLS0 10 0\n");
+  expectError("points_glued.vtk", glued,
+              "points_glued.vtk:5: POINTS declares 5 points, but coordinate 4 is '10CELLS0'");
+  expectError("cells_spare.vtk", legacyVtk("3 0 1 2\n4 1 2 3 4\n0\n", 2, 10, "10\n10\n"),
+              "cells_spare.vtk:11: CELLS declares 2 cells in 10 integers, but its cells hold 9");
+}
+
+// A file that ends right after "DATASET" (the VTK fuzzer: the sniffing threw std::out_of_range).
+TEST(VolumeBadInput, AFileEndingAtDatasetIsOneLine) {
+  for (const char* name : {"ends_at_dataset.vtk", "ends_at_dataset_space.vtk"}) {
+    const std::string text = std::string("# vtk DataFile Version 3.0\nt\nASCII\nDATASET") +
+                             (std::string(name).find("space") != std::string::npos ? " " : "");
+    auto mesh = loadTetMesh(writeTestFile(name, text));
+    ASSERT_FALSE(mesh.ok());
+    EXPECT_NE(mesh.error().message.find(name), std::string::npos) << mesh.error().message;
+    EXPECT_EQ(mesh.error().message.find('\n'), std::string::npos) << mesh.error().message;
+    EXPECT_FALSE(isVtkSurfacePath(writeTestFile(name, text)));
+  }
 }
 
 TEST(VolumeBadInput, MissingFileAndUnknownExtension) {

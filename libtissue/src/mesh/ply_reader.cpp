@@ -12,6 +12,7 @@
 #include <cstring>
 #include <fstream>
 #include <initializer_list>
+#include <iomanip>
 #include <iterator>
 #include <sstream>
 #include <string>
@@ -324,9 +325,15 @@ Result<RawMesh> readPly(const std::filesystem::path& path) {
         double count = 0;
         if (!body.read(prop.countType, count) || count < 0 || count != std::floor(count))
           return fail("expected a list length for property '" + prop.name + "'");
-        if (body.minBytes(std::uint64_t(count), prop.type) > body.remaining() + 1)
-          return fail("list '" + prop.name + "' declares " + std::to_string(std::uint64_t(count)) +
+        // Compared as a double first: a text length such as 1e126 does not fit the integer
+        // (found by the PLY fuzzer: UBSan, float-cast-overflow).
+        if (count > double(body.remaining()) ||
+            body.minBytes(std::uint64_t(count), prop.type) > body.remaining() + 1) {
+          std::ostringstream declared;
+          declared << std::setprecision(15) << count;
+          return fail("list '" + prop.name + "' declares " + declared.str() +
                       " entries, more than the file holds");
+        }
         list.resize(std::size_t(count));
         for (auto& entry : list)
           if (!body.read(prop.type, entry)) return fail("expected a number in list '" + prop.name + "'");

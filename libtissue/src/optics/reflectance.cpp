@@ -98,7 +98,10 @@ double monteCarloRatio(double reducedAlbedo, double g, double eta) {
                  x1 = std::sqrt(1.0 - kReflectanceTableAlbedo[i + 1]);
     return row[i] + (row[i + 1] - row[i]) * (x0 - x) / (x0 - x1);
   };
-  const auto inG = [&](std::size_t e) { return at(e, gi) * (1.0 - gw) + at(e, gi + 1) * gw; };
+  // gi, gw by value: clang 14 (the fuzz tree's compiler) cannot capture structured bindings.
+  const auto inG = [&at, gi = gi, gw = gw](std::size_t e) {
+    return at(e, gi) * (1.0 - gw) + at(e, gi + 1) * gw;
+  };
   return inG(ei) * (1.0 - ew) + inG(ei + 1) * ew;
 }
 

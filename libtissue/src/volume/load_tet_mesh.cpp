@@ -5,7 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iomanip>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <string_view>
 
@@ -129,7 +131,9 @@ VtkContent sniffVtk(const std::filesystem::path& path) {
                  [](unsigned char c) { return char(std::toupper(c)); });
   const auto dataset = upper.find("\nDATASET");
   if (dataset == std::string::npos) return VtkContent::Unknown;
-  std::string kind = upper.substr(dataset + 9, upper.find('\n', dataset + 1) - (dataset + 9));
+  // "\nDATASET" may end the 4 kB read: substr past the end would throw (the VTK fuzzer).
+  const std::size_t from = std::min(dataset + 9, upper.size());
+  std::string kind = upper.substr(from, upper.find('\n', dataset + 1) - from);
   kind.erase(0, kind.find_first_not_of(" \t"));
   kind.erase(kind.find_last_not_of(" \t\r") + 1);
   if (kind == "POLYDATA") return VtkContent::LegacySurface;
@@ -141,6 +145,16 @@ namespace {
 
 bool isInteger(std::string_view token) {
   long long v = 0;
+  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), v);
+  return ec == std::errc() && end == token.data() + token.size();
+}
+
+/// A coordinate as C++ streams read it (VTK's `>>`): an optional sign, digits, a point, an
+/// exponent; no "nan" or "inf", which the stream refuses.
+bool isNumber(std::string_view token) {
+  if (!token.empty() && (token[0] == '+' || token[0] == '-')) token.remove_prefix(1);
+  if (token.empty() || !(std::isdigit(static_cast<unsigned char>(token[0])) || token[0] == '.')) return false;
+  double v = 0;
   const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), v);
   return ec == std::errc() && end == token.data() + token.size();
 }
@@ -170,10 +184,37 @@ Result<void> checkTextCellSections(const std::filesystem::path& path, const std:
     return {};
   };
   for (auto token = next(); !token.empty(); token = next()) {
-    const bool cells = token == "VERTICES" || token == "LINES" || token == "POLYGONS" ||
-                       token == "TRIANGLE_STRIPS" || token == "CELLS";
-    if (!cells && token != "CELL_TYPES") continue;
-    const std::string section(token);
+    // VTK matches its keywords by a case-blind prefix (strncmp of the lower-cased word), so
+    // "CELLSPOINTS" is a CELLS section to it (the VTK fuzzer); the same rule here.
+    std::string upper(token);
+    std::transform(upper.begin(), upper.end(), upper.begin(),
+                   [](unsigned char c) { return char(std::toupper(c)); });
+    std::string section;
+    for (const char* keyword : {"CELL_TYPES", "CELLS", "VERTICES", "LINES", "POLYGONS", "TRIANGLE_STRIPS"})
+      if (upper.rfind(keyword, 0) == 0) {
+        section = keyword;
+        break;
+      }
+    if (upper.rfind("POINTS", 0) == 0) {
+      // A coordinate that does not read as a number makes VTK go on reading keywords from
+      // inside it ("10CELLS0 10 0" turned into CELLS 10 0, a SIGSEGV; the VTK fuzzer).
+      const std::size_t at = line;
+      const auto count = next();
+      next();  // the type
+      long long n = 0;
+      if (!isInteger(count) || (n = std::stoll(std::string(count))) < 0) continue;  // VTK reports it
+      const std::uint64_t values = std::min<std::uint64_t>(std::uint64_t(n), text.size()) * 3;
+      for (std::uint64_t k = 0; k < values; ++k) {
+        const auto value = next();
+        if (value.empty()) break;  // truncated: VTK reports it, with nothing left to misread
+        if (!isNumber(value))
+          return Error{path.string() + ":" + std::to_string(at) + ": POINTS declares " + std::to_string(n) +
+                       " points, but coordinate " + std::to_string(k + 1) + " is '" + std::string(value) +
+                       "'; the file is damaged"};
+      }
+      continue;
+    }
+    if (section.empty()) continue;
     const std::size_t at = line;
     const auto first = next();
     long long a = 0, b = 0;
@@ -196,6 +237,30 @@ Result<void> checkTextCellSections(const std::filesystem::path& path, const std:
     pos = save;
     line = saveLine;
     if (auto ok = needIntegers(std::uint64_t(b), section, at); !ok) return ok;
+    // The legacy layout: a cells, each "n id_1 .. id_n", b integers in all. VTK 9.1's readers
+    // crash when the cells do not fill the b integers exactly ("CELLS 240 0": a null buffer
+    // written; found by the VTK fuzzer), so the cells are walked too, over the integers counted.
+    const std::size_t end = pos, endLine = line;
+    pos = save;
+    line = saveLine;
+    const auto total = std::uint64_t(b);
+    std::uint64_t used = 0;
+    for (std::uint64_t c = 0; c < std::uint64_t(a); ++c) {
+      const long long n = used < total ? std::stoll(std::string(next())) : -1;
+      if (n < 0 || std::uint64_t(n) >= total - used)
+        return Error{path.string() + ":" + std::to_string(at) + ": " + section + " declares " +
+                     std::to_string(a) + " cells in " + std::to_string(b) + " integers, but cell " +
+                     std::to_string(c + 1) + " does not fit in them; fix the counts"};
+      for (long long k = 0; k < n; ++k)
+        next();
+      used += 1 + std::uint64_t(n);
+    }
+    if (used != total)
+      return Error{path.string() + ":" + std::to_string(at) + ": " + section + " declares " +
+                   std::to_string(a) + " cells in " + std::to_string(b) + " integers, but its cells hold " +
+                   std::to_string(used) + "; fix the counts"};
+    pos = end;
+    line = endLine;
   }
   return {};
 }
@@ -215,10 +280,13 @@ Result<void> checkLegacyVtkCounts(const std::filesystem::path& path) {
     double n = 0;
     if (std::sscanf(line.c_str() + 6, "%lf", &n) != 1) return {};
     // Each point takes at least 6 bytes as text ("0 0 0 ") and 12 in binary floats.
-    if (n < 0 || n * 6.0 > double(size))
-      return Error{path.string() + ":" + std::to_string(k + 1) + ": POINTS declares " +
-                   std::to_string(std::uint64_t(std::max(0.0, n))) + " points, more than a " +
-                   std::to_string(size) + "-byte file can hold; fix the count or the truncated file"};
+    if (n < 0 || n * 6.0 > double(size)) {
+      std::ostringstream declared;  // not via an integer: 1e29 does not fit one (the VTK fuzzer, UBSan)
+      declared << std::setprecision(15) << std::max(0.0, n);
+      return Error{path.string() + ":" + std::to_string(k + 1) + ": POINTS declares " + declared.str() +
+                   " points, more than a " + std::to_string(size) +
+                   "-byte file can hold; fix the count or the truncated file"};
+    }
     break;
   }
   if (!ascii) return {};

@@ -32,7 +32,9 @@ void checkObject(const json& obj, const std::string& where, std::initializer_lis
   if (!obj.is_object())
     throw KeyError{where.empty() ? "(top level)" : where, "expected an object, got " + shown(obj)};
   for (const auto& [key, value] : obj.items()) {
-    const bool known = std::any_of(allowed.begin(), allowed.end(), [&](const char* a) { return key == a; });
+    // key by an init-capture: clang 14 (the fuzz tree's compiler) cannot capture a structured binding.
+    const bool known =
+        std::any_of(allowed.begin(), allowed.end(), [&name = key](const char* a) { return name == a; });
     if (known) continue;
     std::string list;
     for (const char* a : allowed)
