@@ -3,7 +3,8 @@
 # Runs libFuzzer for SECONDS (or RUNS executions when given) on a working corpus WORK_DIR that
 # starts from the committed seeds (the seeds are never written). Bounded per input: 10 s and
 # 2 GiB (a slower or larger input is a finding). Exit 0 only without a crash, leak, timeout or
-# out-of-memory; the final line gives the executions done.
+# out-of-memory; the final line gives the executions done. The whole output is kept in
+# WORK_DIR/../<fuzzer>.log (a finding's report starts far above the last lines shown).
 #
 # The VTK targets (tissue_fuzz_vtk, tissue_fuzz_vtu) are fuzzed with libFuzzer's per-input leak
 # check off and then the whole working corpus is replayed once with it on. VTK 9.1's readers keep
@@ -17,6 +18,8 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 mkdir -p "$work"
 artifacts="$work/../artifacts-$(basename "$fuzzer")/"
 mkdir -p "$artifacts"
+log="$work/../$(basename "$fuzzer").log"
+: >"$log"
 limits=(-timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=2048 -max_len=65536 -artifact_prefix="$artifacts")
 case "$(basename "$fuzzer")" in
   tissue_fuzz_vtk | tissue_fuzz_vtu) vtk=1 ;;
@@ -24,15 +27,15 @@ case "$(basename "$fuzzer")" in
 esac
 if [ "$vtk" = 0 ]; then
   "$fuzzer" -max_total_time="$seconds" -runs="$runs" "${limits[@]}" -print_final_stats=1 "$work" "$seeds" 2>&1 |
-    tail -n 25
+    tee -a "$log" | tail -n 25
   exit "${PIPESTATUS[0]}"
 fi
 ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" "$fuzzer" -max_total_time="$seconds" -runs="$runs" \
-  -detect_leaks=0 "${limits[@]}" -print_final_stats=1 "$work" "$seeds" 2>&1 | tail -n 25
+  -detect_leaks=0 "${limits[@]}" -print_final_stats=1 "$work" "$seeds" 2>&1 | tee -a "$log" | tail -n 25
 status="${PIPESTATUS[0]}"
 [ "$status" = 0 ] || exit "$status"
 echo "leak pass: every input of $work once, LeakSanitizer with full stacks"
 ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}fast_unwind_on_malloc=0" \
   LSAN_OPTIONS="suppressions=$here/../sanitizers/lsan_vtk.supp:print_suppressions=1" \
-  "$fuzzer" -runs=0 "${limits[@]}" "$work" 2>&1 | tail -n 40
+  "$fuzzer" -runs=0 "${limits[@]}" "$work" 2>&1 | tee -a "$log" | tail -n 40
 exit "${PIPESTATUS[0]}"
