@@ -36,7 +36,9 @@ struct SoakConfig {
 /// Runs the soak in a scene of `scene`'s settings (its methods' map sizes replaced by mapSize) on
 /// its own headless context. Returns the report
 /// as a JSON object's text: session, frames, warmup_frames, method_every, width, height, frame_ms
-/// {median, p99, max}, rss_kb {after_warmup, end, max, growth}, gl_objects {after_warmup, end,
+/// {median, p99, max}, rss_kb {after_warmup, end, max, floor_first_quarter, floor_last_quarter,
+/// growth = the last quarter's floor less the first's (a leak raises the floor), peak_growth},
+/// gl_objects {after_warmup, end,
 /// min, max, by_kind}, heap_kb {after_warmup, end} (core/process_memory.h), samples [{frame,
 /// rss_kb, heap_kb, gl_objects}], divergence_events, nan_frames and
 /// the verdicts rss_ok (growth <= rssBudgetKb) and gl_ok (constant). Errors: bad counts (the
