@@ -31,7 +31,8 @@ Result<void> checkConfig(const SoakConfig& o) {
     return Error{"soak: --warmup " + std::to_string(o.warmupFrames) +
                  " must see every method once: give at least " +
                  std::to_string(o.methodEvery * long(kMethods.size())) + " (5 x --method-every)"};
-  if (o.width < 16 || o.height < 16) return Error{"soak: --width and --height must be >= 16 pixels"};
+  if (o.width < 16 || o.height < 16 || o.width > 8192 || o.height > 8192)
+    return Error{"soak: --width and --height must be 16..8192 pixels"};
   if (o.mapSize < 64) return Error{"soak: --map-size must be >= 64 texels"};
   return {};
 }

@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "../organ_data.h"
+#include "cli_options.h"
 #include "command.h"
 #include "output.h"
 #include "report_output.h"
@@ -48,8 +49,7 @@ void registerBudgetBenchCommand(CLI::App& app, const GlobalOptions& global, int&
   cmd->add_option("--budgets", o->config.budgetsMs,
                   "frame budgets, ms (default: three from the fixed settings' times)")
       ->delimiter(',');
-  cmd->add_option("--width", o->config.width, "image width, pixels (default 128)");
-  cmd->add_option("--height", o->config.height, "image height, pixels (default 96)");
+  addImageSizeOptions(cmd, o->config.width, o->config.height);
   cmd->add_option("--truth-seconds", o->config.truthSeconds, "truth time at most, s (default 120)");
   cmd->add_option("--spp", o->config.truthSpp, "truth samples per pixel at most (default 4096)");
   cmd->add_option("--truth-cache", o->config.truthCache,

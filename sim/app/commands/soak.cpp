@@ -4,6 +4,7 @@
 // (tissue/studies/soak_run.h). Exit 1 when either verdict fails.
 #include <iostream>
 
+#include "cli_options.h"
 #include "command.h"
 #include "organ_data.h"
 #include "output.h"
@@ -22,8 +23,7 @@ void registerSoakCommand(CLI::App& app, const GlobalOptions& global, int& exitCo
   cmd->add_option("--sample-every", o->sampleEvery, "frames between samples (default 1000)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--method-every", o->methodEvery, "frames per shading method (default 200; 0: lit only)");
-  cmd->add_option("--width", o->width, "rendered width, pixels (default 96)")->check(CLI::Range(16, 8192));
-  cmd->add_option("--height", o->height, "rendered height, pixels (default 72)")->check(CLI::Range(16, 8192));
+  addImageSizeOptions(cmd, o->width, o->height);  // checked by studies::soakSession
   cmd->add_option("--map-size", o->mapSize, "texture-space and parallax map texels a side (default 256)");
   cmd->callback([o, session, &global, &exitCode] {
     o->session =
