@@ -55,6 +55,20 @@ TEST(ImageIo, APngCutBeforeItsEndIsRefused) {
   EXPECT_NE(read.error().message.find("IEND"), std::string::npos) << read.error().message;
 }
 
+// The PNG fuzz target's timeout: 18 bytes that stb reads as a 65535 x 65535 TGA, which it
+// decoded for minutes. Refused from the header, as more pixels than 18 bytes can hold.
+TEST(ImageIo, AHeaderDeclaringMorePixelsThanTheFileHoldsIsRefusedAtOnce) {
+  const std::string tga("\xff\x00\x03\x00\xff\xff\xff\xff\x00\x00\x00\x00\x60\x62\xd7\x28\x0f\x67", 18);
+  const auto bad = std::filesystem::temp_directory_path() / "tissue_image_io_huge.tga";
+  ASSERT_TRUE(writeTextFileAtomic(bad, tga));
+  auto read = readImage(bad);
+  ASSERT_FALSE(read);
+  EXPECT_NE(read.error().message.find("more than a 18-byte file can hold"), std::string::npos)
+      << read.error().message;
+  EXPECT_NE(read.error().message.find(bad.string()), std::string::npos);
+  EXPECT_EQ(read.error().message.find('\n'), std::string::npos);
+}
+
 TEST(ImageIo, AMissingFileSaysSo) {
   auto read = readImage("/nonexistent/tissue.png");
   ASSERT_FALSE(read);

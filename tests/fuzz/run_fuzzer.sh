@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# One fuzz pass: tests/fuzz/run_fuzzer.sh FUZZER SEEDS_DIR WORK_DIR SECONDS [RUNS]
-# Runs libFuzzer for SECONDS (or RUNS executions when given) on a working corpus WORK_DIR that
+# One fuzz pass: tests/fuzz/run_fuzzer.sh FUZZER SEEDS_DIR WORK_DIR SECONDS [RUNS [SEED]]
+# Runs libFuzzer for SECONDS (or RUNS executions when given; -1: no limit) with libFuzzer's SEED
+# (default 0: a random one; the test suite's short pass gives 1, so that a pass that fails on one
+# machine fails the same way on the next) on a working corpus WORK_DIR that
 # starts from the committed seeds (the seeds are never written). Bounded per input: 10 s and
 # 2 GiB (a slower or larger input is a finding). Exit 0 only without a crash, leak, timeout or
 # out-of-memory; the final line gives the executions done. The whole output is kept in
@@ -13,14 +15,14 @@
 # name a function, which costs another factor of six. The replay has both, and
 # tests/sanitizers/lsan_vtk.supp names VTK's own leaks (docs/DECISIONS.md).
 set -euo pipefail
-fuzzer="$1" seeds="$2" work="$3" seconds="$4" runs="${5:--1}"
+fuzzer="$1" seeds="$2" work="$3" seconds="$4" runs="${5:--1}" seed="${6:-0}"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 mkdir -p "$work"
 artifacts="$work/../artifacts-$(basename "$fuzzer")/"
 mkdir -p "$artifacts"
 log="$work/../$(basename "$fuzzer").log"
 : >"$log"
-limits=(-timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=2048 -max_len=65536 -artifact_prefix="$artifacts")
+limits=(-seed="$seed" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=2048 -max_len=65536 -artifact_prefix="$artifacts")
 case "$(basename "$fuzzer")" in
   tissue_fuzz_vtk | tissue_fuzz_vtu) vtk=1 ;;
   *) vtk=0 ;;

@@ -232,6 +232,13 @@ TEST(LoadMesh, HugeDeclaredCountsFailAtOnceWithOneLine) {
       loadError(writeTestFile("huge.off", "OFF\n1000000000000 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
   EXPECT_NE(off.find("huge.off: the OFF header declares 1000000000000 vertices"), std::string::npos) << off;
   EXPECT_EQ(off.find('\n'), std::string::npos);
+  // A face's corner count is allocated for by OpenMesh's reader (the OFF fuzz target: 2 GiB).
+  const auto corners = loadError(
+      writeTestFile("corners.off", "OFF\n4 4 6\n0 0 0\n10 0 0\n0 10 0\n0 0 10\n39999999999 0 2012 3\n"));
+  EXPECT_NE(corners.find("corners.off:7: a face declares 39999999999 corners, but the mesh has 4 vertices"),
+            std::string::npos)
+      << corners;
+  EXPECT_EQ(corners.find('\n'), std::string::npos);
   std::string stl(84 + 50, '\0');
   const std::uint32_t n = 4000000000u;
   std::memcpy(stl.data() + 80, &n, 4);

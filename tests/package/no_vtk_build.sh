@@ -3,9 +3,10 @@
 # tree (default build-novtk/ beside build/, or $TISSUE_NOVTK_BUILD_DIR). Run by
 # scripts/run-tests.sh after the main ctest; not a ctest test itself (it builds the project).
 #   tests/package/no_vtk_build.sh [extra cmake options]
-# With -DTISSUE_SANITIZE=address,undefined (scripts/run-tests.sh passes it) the tree is also the
-# sanitized one (ASan, LSan, UBSan; cmake/TissueSanitizers.cmake): any finding fails its test, and
-# the package test (it builds an unsanitized consumer) runs in the main tree only.
+# With -DTISSUE_SANITIZE=address,undefined (scripts/run-tests.sh passes it, with clang and
+# -DTISSUE_FUZZ=ON) the tree is also the sanitized one (ASan, LSan, UBSan;
+# cmake/TissueSanitizers.cmake) and runs the fuzz targets' short passes (label "fuzz"): any finding
+# fails its test, and the package test (it builds an unsanitized consumer) runs in the main tree only.
 # ccache is used when present. The "slow" (minutes, VTK-independent) and "style" (the same files
 # as the main tree) tests run in the main tree only.
 set -euo pipefail

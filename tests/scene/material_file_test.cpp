@@ -145,6 +145,14 @@ TEST(MaterialFile, ErrorsNameTheFileAndTheKey) {
   const auto d = readMaterialFile(notJson);
   ASSERT_FALSE(d.ok());
   EXPECT_NE(d.error().message.find("not a JSON object"), std::string::npos);
+
+  // A name that is a number: nlohmann's value() throws type_error (the material fuzz target).
+  const auto numberName = writeFile("number_name.json", R"({"name": 1.3, "source": "x"})");
+  const auto e = readMaterialFile(numberName);
+  ASSERT_FALSE(e.ok());
+  EXPECT_NE(e.error().message.find("number_name.json: a value has the wrong type"), std::string::npos)
+      << e.error().message;
+  EXPECT_EQ(e.error().message.find('\n'), std::string::npos);
 }
 
 TEST(MaterialFile, TheDefaultMaterialIsAValidOrgan) {

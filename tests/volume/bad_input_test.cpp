@@ -169,6 +169,29 @@ TEST(VolumeBadInput, AFileEndingAtDatasetIsOneLine) {
   }
 }
 
+// VTK's XML reader takes the NumberOf... attributes as they are: the VTU fuzz target's 100-digit
+// NumberOfComponents ran for minutes inside VTK. Checked first, in both builds (with and without VTK).
+TEST(VolumeBadInput, XmlCountsThatAreNotWholeNumbersOrTooLargeAreOneLine) {
+  const std::string head =
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n<UnstructuredGrid>\n";
+  const std::string huge =
+      "<Piece NumberOfPoints=\"2\" NumberOfCells=\"2\">\n<Points><DataArray type=\"Float32\" "
+      "NumberOfComponents=\"3" +
+      std::string(100, '0') +
+      "\" format=\"ascii\">0 0 1</DataArray>"
+      "</Points>\n</Piece></UnstructuredGrid></VTKFile>\n";
+  expectError("components.vtu", head + huge, "components.vtu:5: NumberOfComponents=\"3000");
+  expectError("components.vtu", head + huge, "is not a whole number; fix the attribute");
+  const std::string many =
+      "<Piece NumberOfPoints=\"99999999999\" NumberOfCells=\"1\">\n</Piece></UnstructuredGrid></VTKFile>\n";
+  expectError("points.vtu", head + many, "points.vtu:4: NumberOfPoints=\"99999999999\" is more than a");
+  const auto path = writeTestFile("points_under_vtk_name.vtk", head + many);
+  auto mesh = loadTetMesh(path);
+  ASSERT_FALSE(mesh.ok());
+  EXPECT_NE(mesh.error().message.find("NumberOfPoints"), std::string::npos) << mesh.error().message;
+  EXPECT_EQ(mesh.error().message.find('\n'), std::string::npos);
+}
+
 TEST(VolumeBadInput, MissingFileAndUnknownExtension) {
   auto missing = loadTetMesh(std::filesystem::path(TISSUE_TEST_OUTPUT_DIR) / "volume" / "absent.vtu");
   ASSERT_FALSE(missing.ok());

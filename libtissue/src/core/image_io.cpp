@@ -89,6 +89,18 @@ Result<Image8> readImage(const std::filesystem::path& path, int forceChannels) {
   if (bytes.size() > std::size_t(std::numeric_limits<int>::max()))
     return Error{"cannot read image '" + path.string() + "': larger than 2 GiB"};
   int w = 0, h = 0, c = 0;
+  // The declared size against the file's before decoding: stb decodes a damaged header's
+  // 65535 x 65535 TGA for minutes (found by the PNG fuzz target). No format packs more than
+  // about a thousand pixels into a byte (deflate's limit is 1032:1, TGA's run-length 64:1), and
+  // the renderer's textures stop at 16384 on a side.
+  if (stbi_info_from_memory(bytes.data(), int(bytes.size()), &w, &h, &c)) {
+    constexpr double kPixelsPerByte = 1100.0, kMaxSide = 16384.0;
+    if (double(w) > kMaxSide || double(h) > kMaxSide ||
+        double(w) * double(h) > kPixelsPerByte * double(bytes.size()))
+      return Error{"cannot read image '" + path.string() + "': its header declares " + std::to_string(w) +
+                   " x " + std::to_string(h) + " pixels, more than a " + std::to_string(bytes.size()) +
+                   "-byte file can hold (or over 16384 on a side); the file is damaged or truncated"};
+  }
   stbi_uc* data = stbi_load_from_memory(bytes.data(), int(bytes.size()), &w, &h, &c, forceChannels);
   if (!data) {
     return Error{"cannot read image '" + path.string() + "': " + stbi_failure_reason() +

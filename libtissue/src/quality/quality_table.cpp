@@ -60,7 +60,21 @@ int QualityTable::find(std::string_view method, std::string_view setting) const 
   return -1;
 }
 
+namespace {
+Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, const TableSettings& settings);
+}  // namespace
+
 Result<QualityTable> qualityTableFromAtlasJson(std::string_view jsonText, const TableSettings& settings) {
+  try {  // nlohmann's accessors throw on a value of the wrong type; the library never throws
+    return tableFromAtlasJsonUnguarded(jsonText, settings);
+  } catch (const nlohmann::json::exception& e) {
+    return Error{std::string("quality table: a value of the atlas JSON has the wrong type (") + e.what() +
+                 ")"};
+  }
+}
+
+namespace {
+Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, const TableSettings& settings) {
   const nlohmann::json json = nlohmann::json::parse(jsonText.begin(), jsonText.end(), nullptr, false);
   if (json.is_discarded()) return Error{"quality table: the atlas JSON does not parse"};
   if (!json.contains("results") || !json["results"].is_array())
@@ -135,6 +149,7 @@ Result<QualityTable> qualityTableFromAtlasJson(std::string_view jsonText, const 
   table.source = "atlas JSON";
   return table;
 }
+}  // namespace
 
 Result<QualityTable> loadQualityTable(const std::filesystem::path& atlasJson, const TableSettings& settings) {
   std::ifstream in(atlasJson);

@@ -66,7 +66,25 @@ Result<std::filesystem::path> findTexture(const std::string& relative,
 
 }  // namespace
 
+namespace {
+Result<MaterialFile> readMaterialFileUnguarded(const std::filesystem::path& file,
+                                               const MaterialFileOptions& options);
+}  // namespace
+
 Result<MaterialFile> readMaterialFile(const std::filesystem::path& file, const MaterialFileOptions& options) {
+  // nlohmann's accessors throw on a value of the wrong type (value("name") of a number: found
+  // by the material fuzz target); the library never throws across its API.
+  try {
+    return readMaterialFileUnguarded(file, options);
+  } catch (const json::exception& e) {
+    return Error{"material file " + file.string() + ": a value has the wrong type (" + e.what() +
+                 "); see docs/DATA.md for the schema"};
+  }
+}
+
+namespace {
+Result<MaterialFile> readMaterialFileUnguarded(const std::filesystem::path& file,
+                                               const MaterialFileOptions& options) {
   auto text = readTextFile(file);
   if (!text)
     return Error{"material file " + file.string() +
@@ -115,6 +133,7 @@ Result<MaterialFile> readMaterialFile(const std::filesystem::path& file, const M
   }
   return m;
 }
+}  // namespace
 
 MaterialFile defaultMaterial() {
   MaterialFile m;

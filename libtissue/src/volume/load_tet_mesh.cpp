@@ -296,6 +296,40 @@ Result<void> checkLegacyVtkCounts(const std::filesystem::path& path) {
   return checkTextCellSections(path, text);
 }
 
+Result<void> checkXmlVtkCounts(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // Appended binary data may be zlib-compressed (at most about 1032:1), so a count is bounded by
+  // that many values per byte of the file; a data array's components are a handful (3 for
+  // points), 1024 is far beyond any VTK writes for a mesh.
+  const double maxCount = 1100.0 * double(text.size()) + 16.0;
+  constexpr double kMaxComponents = 1024.0;
+  for (std::size_t at = text.find("NumberOf"); at != std::string::npos; at = text.find("NumberOf", at + 8)) {
+    const std::size_t eq =
+        text.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz", at + 8);
+    if (eq == std::string::npos || text[eq] != '=' || eq + 1 >= text.size()) continue;  // not an attribute
+    const char quote = text[eq + 1];
+    if (quote != '"' && quote != '\'') continue;
+    const std::size_t end = text.find(quote, eq + 2);
+    const std::string name = text.substr(at, eq - at);
+    const std::string value =
+        text.substr(eq + 2, end == std::string::npos ? 40 : std::min<std::size_t>(end - eq - 2, 40));
+    const bool digits = !value.empty() && value.size() <= 18 &&
+                        value.find_first_not_of("0123456789") == std::string::npos &&
+                        end != std::string::npos;
+    const double n = digits ? std::stod(value) : -1.0;
+    const double bound = name == "NumberOfComponents" ? kMaxComponents : maxCount;
+    if (!digits || n > bound) {
+      const auto line = 1 + std::count(text.begin(), text.begin() + std::ptrdiff_t(at), '\n');
+      return Error{path.string() + ":" + std::to_string(line) + ": " + name + "=\"" + value +
+                   (digits ? "\" is more than a " + std::to_string(text.size()) + "-byte file can hold"
+                           : "\" is not a whole number") +
+                   "; fix the attribute"};
+    }
+  }
+  return {};
+}
+
 }  // namespace detail
 
 bool isVtkSurfacePath(const std::filesystem::path& path) {
@@ -311,8 +345,8 @@ Result<VtkSurface> readVtkSurface(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path, ec))
     return Error{path.string() + ": no such file; check the path"};
   const bool xml = lowerExtension(path) == ".vtp" || detail::sniffVtk(path) == detail::VtkContent::XmlSurface;
-  if (!xml)
-    if (auto counts = detail::checkLegacyVtkCounts(path); !counts) return counts.error();
+  if (auto counts = xml ? detail::checkXmlVtkCounts(path) : detail::checkLegacyVtkCounts(path); !counts)
+    return counts.error();
   return detail::readVtkPolyData(path, xml);
 }
 
@@ -332,14 +366,14 @@ Result<TetMesh> loadTetMesh(const std::filesystem::path& path, const TetLoadOpti
     return Error{path.string() + ": holds a surface (" +
                  (content == detail::VtkContent::XmlSurface ? "VTK XML PolyData" : "DATASET POLYDATA") +
                  "), not tetrahedra; load it as a surface mesh (tissue-sim mesh-info reads it as one)"};
-  if (content == detail::VtkContent::XmlGrid)
-    raw = detail::readVtu(path);  // XML content under a .vtk name: VTK's XML reader reads it
-  else if (ext == ".vtk") {
+  if (content == detail::VtkContent::XmlGrid || ext == ".vtu") {
+    // XML content under a .vtk name: VTK's XML reader reads it.
+    if (auto counts = detail::checkXmlVtkCounts(path); !counts) return counts.error();
+    raw = detail::readVtu(path);
+  } else if (ext == ".vtk") {
     if (auto counts = detail::checkLegacyVtkCounts(path); !counts) return counts.error();
     raw = detail::readLegacyVtk(path);
-  } else if (ext == ".vtu")
-    raw = detail::readVtu(path);
-  else if (ext == ".msh")
+  } else if (ext == ".msh")
     raw = detail::readGmsh(path);
   else
     return Error{path.string() + ": unknown volume mesh extension '" + ext + "'; use .vtk, .vtu or .msh"};

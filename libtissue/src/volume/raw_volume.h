@@ -33,6 +33,10 @@ VtkContent sniffVtk(const std::filesystem::path& path);
 /// Bounded memory and VTK's own robustness: the POINTS count of a legacy .vtk header against
 /// the file size, and (text files) each cell section's declared integers, before VTK reads it.
 Result<void> checkLegacyVtkCounts(const std::filesystem::path& path);
+/// The same for VTK XML (.vtu, .vtp, XML content in a .vtk): every NumberOf... attribute must be
+/// a plain non-negative integer that the file could hold (VTK's XML reader takes them as they
+/// are: a 100-digit NumberOfComponents ran for minutes, found by the VTU fuzz target).
+Result<void> checkXmlVtkCounts(const std::filesystem::path& path);
 
 /// Legacy VTK unstructured grid (.vtk) through vtkUnstructuredGridReader.
 Result<RawVolume> readLegacyVtk(const std::filesystem::path& path);

@@ -53,7 +53,7 @@ std::string oneLine(const std::string& message) {
 /// file becomes one Error (the reader never throws and only logs).
 void collectMessage(vtkObject*, unsigned long, void* clientData, void* callData) {
   auto* messages = static_cast<std::string*>(clientData);
-  if (callData && messages->empty()) *messages = oneLine(static_cast<const char*>(callData));
+  if (messages && callData && messages->empty()) *messages = oneLine(static_cast<const char*>(callData));
 }
 
 /// Messages that VTK objects without the reader's observer send (helper objects, generic
@@ -112,11 +112,17 @@ std::string runCaptured(Reader& reader, const std::filesystem::path& path) {
   vtkNew<vtkCallbackCommand> observer;
   observer->SetCallback(collectMessage);
   observer->SetClientData(&message);
-  reader.AddObserver(vtkCommand::ErrorEvent, observer);
-  reader.AddObserver(vtkCommand::WarningEvent, observer);
+  const unsigned long onError = reader.AddObserver(vtkCommand::ErrorEvent, observer);
+  const unsigned long onWarning = reader.AddObserver(vtkCommand::WarningEvent, observer);
   OutputWindowScope window;
   reader.SetFileName(path.c_str());
   reader.Update();
+  // The reader outlives this frame (its caller reads the output): an event after the return
+  // must not reach `message`, a dead local (its std::string writes happen in libstdc++, which
+  // no sanitizer sees).
+  reader.RemoveObserver(onError);
+  reader.RemoveObserver(onWarning);
+  observer->SetClientData(nullptr);
   return message.empty() ? window.first() : message;
 }
 

@@ -366,7 +366,7 @@ Result<Scenario> parseScenario(const std::string& text, const std::filesystem::p
   json j;
   try {
     j = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse errors, and numbers beyond a double (out_of_range.406)
     return Error{name + ": not valid JSON (" + e.what() + ")"};
   }
   Scenario out;
@@ -375,6 +375,8 @@ Result<Scenario> parseScenario(const std::string& text, const std::filesystem::p
     parseTopLevel(j, file, paths, out);
   } catch (const KeyError& e) {
     return Error{name + ": " + e.key + ": " + e.what};
+  } catch (const json::exception& e) {  // a value of the wrong type where no check named its key
+    return Error{name + ": a value has the wrong type (" + e.what() + "); see docs/DATA.md for the schema"};
   }
   return out;
 }
