@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <span>
+#include <vector>
 
 #include "test_meshes.h"
+#include "tissue/core/vec_math.h"
 #include "tissue/mesh/tangent_frames.h"
 #include "tissue/mesh/vertex_normals.h"
 
@@ -60,6 +63,87 @@ TEST(DeformableSurface, UpdateMatchesRecomputationFromScratch) {
               1e-5);
     EXPECT_NEAR(incremental[i].w, surface->planes()[i].w, 1e-4f);
   }
+}
+
+// A dent that deepens and drifts across the north cap: frame f of a poke.
+std::vector<Float3> pokedShape(std::span<const Float3> rest, int f) {
+  std::vector<Float3> geo(rest.begin(), rest.end());
+  const Float3 centre{3.0f * float(f) / 10.0f, 0.0f, 30.0f};
+  for (auto& p : geo) {
+    const Float3 d = p - centre;
+    p.z -= 0.1f * float(f) * std::exp(-dot(d, d) / 60.0f);
+  }
+  return geo;
+}
+
+// Planes and tangents skipped while a method does not read them come back, when one does,
+// equal to those of a surface that kept them current every frame (issue 16).
+void expectCatchUpEqualsAlwaysCurrent(const PlaneRefitSettings& refit) {
+  const auto sphere = test::makeUvSphere(30.0f, 30, 60);
+  auto always = DeformableSurface::create(sphere, {}, 1, refit);
+  auto lazy = DeformableSurface::create(sphere, {}, 1, refit);
+  ASSERT_TRUE(always.ok() && lazy.ok());
+  const std::vector<Float4> restPlanes(lazy->planes().begin(), lazy->planes().end());
+  const std::vector<Float4> restTangents(lazy->tangents().begin(), lazy->tangents().end());
+  lazy->setWork({.planes = false, .tangents = false});
+  for (int f = 1; f <= 12; ++f) {
+    const auto geo = pokedShape(always->geometricRestPositions(), f);
+    const auto a = always->update(geo);
+    const auto l = lazy->update(geo);
+    EXPECT_TRUE(a.planes && a.tangents);
+    EXPECT_GT(a.refit.refittedPlanes, 0u) << "frame " << f;
+    // The lazy surface does no plane re-fit nor tangent work, and says its attributes are stale.
+    EXPECT_FALSE(l.planes || l.tangents);
+    EXPECT_EQ(l.refit.refittedPlanes, 0u);
+    EXPECT_EQ(l.refit.movedVertices, 0u);
+    EXPECT_FALSE(lazy->planesCurrent() || lazy->tangentsCurrent());
+    for (std::size_t i = 0; i < restPlanes.size(); ++i)
+      ASSERT_EQ(lazy->planes()[i], restPlanes[i]) << "frame " << f;  // stale: as at rest
+    for (std::size_t i = 0; i < restTangents.size(); ++i)
+      ASSERT_EQ(lazy->tangents()[i], restTangents[i]) << "frame " << f;
+    for (std::size_t i = 0; i < lazy->normals().size(); ++i)
+      ASSERT_EQ(lazy->normals()[i], always->normals()[i]);  // normals always follow
+  }
+  // The poke changed planes and tangents: the catch-up below has work to do.
+  std::size_t changedPlanes = 0, changedTangents = 0;
+  for (std::size_t i = 0; i < restPlanes.size(); ++i)
+    changedPlanes += always->planes()[i] == restPlanes[i] ? 0 : 1;
+  for (std::size_t i = 0; i < restTangents.size(); ++i)
+    changedTangents += always->tangents()[i] == restTangents[i] ? 0 : 1;
+  EXPECT_GT(changedPlanes, 0u);
+  EXPECT_GT(changedTangents, 0u);
+  // Switching the work on brings both up to date at once.
+  const SurfaceWork fresh = lazy->setWork({});
+  EXPECT_TRUE(fresh.planes && fresh.tangents);
+  EXPECT_TRUE(lazy->planesCurrent() && lazy->tangentsCurrent());
+  for (std::size_t i = 0; i < lazy->tangents().size(); ++i)
+    ASSERT_EQ(lazy->tangents()[i], always->tangents()[i]) << "vertex " << i;  // exactly
+  const auto caughtUp = lazy->planes();
+  if (refit.maxNormalErrorRad == 0.0) {
+    for (std::size_t i = 0; i < caughtUp.size(); ++i)
+      ASSERT_EQ(caughtUp[i], always->planes()[i]) << "vertex " << i;  // the exact re-fit: bit for bit
+  } else {
+    // Both within the bound of a full re-fit of the current shape, so within twice it of each other.
+    auto full = DeformableSurface::create(sphere, {}, 1, {.maxNormalErrorRad = 0.0});
+    ASSERT_TRUE(full.ok());
+    full->update(pokedShape(full->geometricRestPositions(), 12));
+    const double theta = refit.maxNormalErrorRad;
+    EXPECT_LE(comparePlanes(caughtUp, full->planes()).maxAngleRad, theta);
+    EXPECT_LE(comparePlanes(always->planes(), full->planes()).maxAngleRad, theta);
+    EXPECT_LE(comparePlanes(caughtUp, always->planes()).maxAngleRad, 2.0 * theta);
+    EXPECT_LT(comparePlanes(caughtUp, full->planes()).maxOffsetMm, 1e-3);
+  }
+  // Nothing to bring up to date a second time.
+  const SurfaceWork again = lazy->setWork({});
+  EXPECT_FALSE(again.planes || again.tangents);
+}
+
+TEST(DeformableSurface, SkippedPlanesAndTangentsCatchUpExactly) {
+  expectCatchUpEqualsAlwaysCurrent({.maxNormalErrorRad = 0.0});
+}
+
+TEST(DeformableSurface, SkippedPlanesCatchUpWithinTheRefitBound) {
+  expectCatchUpEqualsAlwaysCurrent({});
 }
 
 }  // namespace

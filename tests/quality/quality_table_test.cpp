@@ -48,6 +48,32 @@ TEST(QualityTable, ReadsErrorsPerViewClassAndCostPriors) {
   EXPECT_EQ(table->options[std::size_t(wrap)].relRms, l.relRms);
 }
 
+TEST(QualityTable, ReadsTheAtlasRowOfTheWrapTermAsItsOwn) {
+  // An atlas that scored lit with the wrap term (tissue-sim atlas's "lit wrap" row): the option
+  // takes that row's errors and cost, not plain lit's, and the frame's overhead stays plain lit's
+  // intercept.
+  const char* atlas = R"({
+    "truth": {"frames": [{"frame": "rest", "organ_pixels": 1000}, {"frame": "close-up", "organ_pixels": 5000}]},
+    "results": [
+      {"method": "lit", "setting": "wrap", "frame": "rest", "ms": 3.5, "rel_rms": 0.3},
+      {"method": "lit", "setting": "wrap", "frame": "close-up", "ms": 7.5, "rel_rms": 0.35},
+      {"method": "lit", "setting": "default", "frame": "rest", "ms": 3.0, "rel_rms": 0.5},
+      {"method": "lit", "setting": "default", "frame": "close-up", "ms": 7.0, "rel_rms": 0.7}
+    ]})";
+  auto table = qualityTableFromAtlasJson(atlas);
+  ASSERT_TRUE(table) << table.error().message;
+  EXPECT_EQ(table->options.size(), 2u);  // nothing added: the atlas has the row
+  const int wrap = table->find("lit", kWrapSetting), lit = table->find("lit", "default");
+  ASSERT_GE(wrap, 0);
+  ASSERT_GE(lit, 0);
+  const QualityOption& w = table->options[std::size_t(wrap)];
+  EXPECT_DOUBLE_EQ(w.relRms[std::size_t(ViewClass::Rest)], 0.3);
+  EXPECT_DOUBLE_EQ(w.relRms[std::size_t(ViewClass::CloseUp)], 0.35);
+  EXPECT_NEAR(table->frameOverheadMs, 2.0, 1e-9);  // lit default: 2 ms + 1 ms per 1000 px
+  EXPECT_NEAR(w.fixedMs, 0.5, 1e-9);               // the wrap row: 2.5 ms + 1 ms per 1000 px
+  EXPECT_NEAR(w.msPerPx, 1e-3, 1e-12);
+}
+
 TEST(QualityTable, RefusesAJsonWithoutResults) {
   auto table = qualityTableFromAtlasJson(R"({"truth": {}})");
   ASSERT_FALSE(table);

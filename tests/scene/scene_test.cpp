@@ -5,7 +5,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
+#include "loop_fixture.h"
 #include "tissue/scene/scene.h"
 
 namespace tissue::scene {
@@ -275,6 +278,84 @@ TEST(Scene, AnOrgansOwnMethodChoicesReachItsSettings) {
   EXPECT_EQ(*parseShadingMethod("raymarch"), render::ShadingMethod::RayMarch);
   auto truth = separableTruth(a);
   ASSERT_TRUE(truth.ok()) << truth.error().message;
+}
+
+/// The liver's material without its normal map (the lit method then needs no tangents), beside
+/// the test's output; its textures still come from the scene's texture roots.
+std::filesystem::path liverWithoutNormalMap() {
+  std::ifstream in(kData / "materials" / "liver.json");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string json = text.str();
+  const std::string line = "\"normal_map\": \"textures/liver/normal_map.png\",";
+  const auto at = json.find(line);
+  if (at == std::string::npos) {
+    ADD_FAILURE() << "liver.json names no normal map";
+  } else {
+    json.erase(at, line.size());
+  }
+  const auto dir = std::filesystem::path(TISSUE_TEST_OUTPUT_DIR) / "scene" / "mesh_work_switch";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "liver_flat.json") << json;
+  return dir / "liver_flat.json";
+}
+
+TEST(Scene, ASwitchToTheRayMarchRendersWithPlanesAndTangentsAsIfAlwaysKept) {
+  // Two organs under the same poke: one lit (its material has no normal map: no planes, no
+  // tangents), one ray-marched (both, every frame). After the poke, setMethod switches the lit
+  // one to the ray march: its planes and tangents equal the other's before the frame renders.
+  SceneSettings settings;
+  settings.materials.textureRoots = {TISSUE_TEST_GENERATED_DATA_DIR, TISSUE_TEST_DATA_DIR};
+  settings.loop.refit.maxNormalErrorRad = 0.0;  // the exact re-fit: equal bit for bit
+  auto scene = Scene::create({}, settings);
+  ASSERT_TRUE(scene.ok()) << scene.error().message;
+  const auto poke = test::writePokedGrid(std::filesystem::path(TISSUE_TEST_OUTPUT_DIR) / "scene" / "switch");
+  const auto material = liverWithoutNormalMap();
+  auto lit = scene->addOrgan({.material = material, .scenario = poke, .method = render::ShadingMethod::Lit});
+  ASSERT_TRUE(lit.ok()) << lit.error().message;
+  auto marched =
+      scene->addOrgan({.material = material, .scenario = poke, .method = render::ShadingMethod::RayMarch});
+  ASSERT_TRUE(marched.ok()) << marched.error().message;
+  for (int f = 0; f < 40; ++f) {
+    auto step = scene->step(1.0 / 60.0);
+    ASSERT_TRUE(step.ok()) << step.error().message;
+    if (f % 10 == 9) {
+      ASSERT_TRUE(scene->renderImage(64, 48).ok());  // frames rendered lit
+    }
+  }
+  const auto& a = scene->loop(*lit)->surface();
+  const auto& b = scene->loop(*marched)->surface();
+  EXPECT_FALSE(a.planesCurrent() || a.tangentsCurrent());
+  ASSERT_TRUE(scene->setMethod(*lit, render::ShadingMethod::RayMarch).ok());
+  EXPECT_TRUE(a.planesCurrent() && a.tangentsCurrent());
+  ASSERT_EQ(a.planes().size(), b.planes().size());
+  for (std::size_t i = 0; i < a.planes().size(); ++i) {
+    ASSERT_EQ(a.planes()[i], b.planes()[i]) << "vertex " << i;
+    ASSERT_EQ(a.tangents()[i], b.tangents()[i]) << "vertex " << i;
+  }
+  auto marchedFrame = scene->renderImage(64, 48);
+  ASSERT_TRUE(marchedFrame.ok()) << marchedFrame.error().message;
+  // Back to lit: no more plane work while it is poked on.
+  ASSERT_TRUE(scene->setMethod(*lit, render::ShadingMethod::Lit).ok());
+  auto frame = scene->advance(*lit);
+  ASSERT_TRUE(frame.ok());
+  EXPECT_FALSE(frame->mesh.planes || frame->mesh.tangents);
+  // Under a budget the controller's choice sets the work: whatever it chose, each organ's next
+  // frame keeps exactly what its method reads.
+  ASSERT_TRUE(scene->setBudgetMs(1000.0).ok());
+  for (int f = 0; f < 4; ++f) {
+    ASSERT_TRUE(scene->renderImage(64, 48).ok());
+    for (OrganId id : {*lit, *marched}) {
+      const quality::MeshWork chosen = scene->budgetChoices().at(id).mesh;
+      if (chosen.planes) {
+        EXPECT_TRUE(scene->loop(id)->surface().planesCurrent());  // when the frame rendered
+      }
+      auto next = scene->advance(id);
+      ASSERT_TRUE(next.ok());
+      EXPECT_EQ(next->mesh.planes, chosen.planes) << scene->budgetChoices().at(id).method;
+      EXPECT_EQ(next->mesh.tangents, chosen.tangents) << scene->budgetChoices().at(id).method;
+    }
+  }
 }
 
 }  // namespace

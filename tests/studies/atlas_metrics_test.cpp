@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "tissue/scene/budget.h"
 #include "tissue/studies/atlas.h"
 
 namespace tissue::studies {
@@ -74,6 +75,49 @@ TEST(AtlasMetrics, ParetoFrontOfAKnownSet) {
   // 3 (cheapest), 0, 5 (beats 1 at the same cost), 2, 4; 1 is dominated, 6 is not finite.
   EXPECT_EQ(paretoFront(ms, er), (std::vector<std::size_t>{3, 0, 5, 2, 4}));
   EXPECT_TRUE(paretoFront({}, {}).empty());
+}
+
+TEST(AtlasSettings, LitWithTheWrapTermHasItsOwnRow) {
+  // The quality controller's small-footprint fallback is scored like every other setting, in
+  // the quick atlas (the committed table's) and the full one.
+  for (bool quick : {true, false}) {
+    int wraps = 0, plain = 0;
+    for (const AtlasSetting& s : atlasSettings(quick)) {
+      if (s.method != render::ShadingMethod::Lit) continue;
+      if (s.name == quality::kWrapSetting) {
+        ++wraps;
+        EXPECT_EQ(s.choices.litWrap, scene::kFallbackWrap);
+      } else {
+        ++plain;
+        EXPECT_EQ(s.name, "default");
+        EXPECT_EQ(s.choices.litWrap, 0.0f);
+      }
+    }
+    EXPECT_EQ(wraps, 1) << (quick ? "quick" : "full");
+    EXPECT_EQ(plain, 1) << (quick ? "quick" : "full");
+  }
+}
+
+TEST(AtlasSettings, EveryRowNameReadsBackToItsChoices) {
+  // The quality table names options by the atlas's rows; the scene turns a name back into the
+  // choices (scene::choicesOfSetting): the same ones the atlas rendered.
+  for (bool quick : {true, false})
+    for (const AtlasSetting& s : atlasSettings(quick)) {
+      const quality::QualityOption option{.method = std::string(render::shadingMethodName(s.method)),
+                                          .setting = s.name,
+                                          .relRms = {},
+                                          .fixedMs = 0.0,
+                                          .msPerPx = 0.0};
+      auto c = scene::choicesOfSetting(option, {});
+      ASSERT_TRUE(c) << option.method << " " << s.name << ": " << c.error().message;
+      EXPECT_EQ(c->litWrap, s.choices.litWrap) << s.name;
+      EXPECT_EQ(c->kernel, s.choices.kernel) << s.name;
+      EXPECT_EQ(c->taps, s.choices.taps) << s.name;
+      EXPECT_EQ(c->gaussians, s.choices.gaussians) << s.name;
+      EXPECT_EQ(c->cull, s.choices.cull) << s.name;
+      EXPECT_EQ(c->samples, s.choices.samples) << s.name;
+      EXPECT_EQ(c->adaptive, s.choices.adaptive) << s.name;
+    }
 }
 
 }  // namespace

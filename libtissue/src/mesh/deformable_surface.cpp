@@ -129,18 +129,24 @@ SurfaceUpdateStats DeformableSurface::updateWith(std::span<const Float3> geometr
   clock.restart();
   computeNormals();
   stats.normalsMs = clock.elapsedMs();
-  // Phase: local planes, re-fitted only where a neighbourhood moved enough to matter.
+  // Phase: local planes, re-fitted only where a neighbourhood moved enough to matter (and only
+  // when the renderer reads them: setWork).
   clock.restart();
-  if constexpr (std::is_same_v<Refit, PlaneRefitSettings>) {
-    stats.refit = m_fitter.update(m_geoPositions, m_geoNormals, refit, m_pool.get());
-  } else {
-    stats.refit = m_fitter.update(m_geoPositions, m_geoNormals, refit);
+  if (m_work.planes) {
+    if constexpr (std::is_same_v<Refit, PlaneRefitSettings>) {
+      stats.refit = m_fitter.update(m_geoPositions, m_geoNormals, refit, m_pool.get());
+    } else {
+      stats.refit = m_fitter.update(m_geoPositions, m_geoNormals, refit);
+    }
+    copyPlanes();
+    stats.planes = true;
   }
-  copyPlanes();
+  m_planesCurrent = m_work.planes;
   stats.planesMs = clock.elapsedMs();
   // Phase: tangent frames, per render vertex from each chart's own UVs.
   clock.restart();
-  computeTangents();
+  if (m_work.tangents) computeTangents();
+  stats.tangents = m_tangentsCurrent = m_work.tangents;
   stats.tangentsMs = clock.elapsedMs();
   return stats;
 }
@@ -156,6 +162,30 @@ SurfaceUpdateStats DeformableSurface::update(std::span<const Float3> geometricPo
 void DeformableSurface::refitAllPlanes() {
   m_fitter.fitAll(m_geoPositions, m_geoNormals);
   copyPlanes();
+  m_planesCurrent = true;
+}
+
+void DeformableSurface::refitPlanes() {
+  // The fitter compares the positions with those of its last fit (exact mode) or each plane's
+  // last solve (tolerant mode), so one update covers every frame it missed.
+  m_fitter.update(m_geoPositions, m_geoNormals, m_refit, m_pool.get());
+  copyPlanes();
+  m_planesCurrent = true;
+}
+
+SurfaceWork DeformableSurface::setWork(const SurfaceWork& work) {
+  SurfaceWork refreshed{.planes = false, .tangents = false};
+  m_work = work;
+  // The normals and the triangles' shading geometry are current after every update.
+  if (work.planes && !m_planesCurrent) {
+    refitPlanes();
+    refreshed.planes = true;
+  }
+  if (work.tangents && !m_tangentsCurrent) {
+    computeTangents();
+    m_tangentsCurrent = refreshed.tangents = true;
+  }
+  return refreshed;
 }
 
 void DeformableSurface::computeNormals() {

@@ -114,8 +114,19 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
   std::map<std::pair<std::string, std::string>, std::pair<double, double>> lines;
   for (const auto& id : order)
     lines[id] = fitLine(acc[id].pxMs);
-  for (const auto& [id, line] : lines)
-    if (id.first == "lit") table.frameOverheadMs = std::max(0.0, line.first);
+  // The plain lit row's intercept (an atlas that scores the wrap term has two lit rows; without a
+  // default one, the lowest lit intercept).
+  if (const auto plain = lines.find({"lit", "default"}); plain != lines.end()) {
+    table.frameOverheadMs = std::max(0.0, plain->second.first);
+  } else {
+    bool first = true;
+    for (const auto& [id, line] : lines)
+      if (id.first == "lit") {
+        const double overhead = std::max(0.0, line.first);
+        table.frameOverheadMs = first ? overhead : std::min(table.frameOverheadMs, overhead);
+        first = false;
+      }
+  }
   for (const auto& id : order) {
     const Acc& a = acc[id];
     double sum = 0.0;

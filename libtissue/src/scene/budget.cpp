@@ -75,6 +75,8 @@ Result<MethodChoices> choicesOfSetting(const quality::QualityOption& option, con
       if (g == std::string::npos) return bad();
       c.gaussians = std::stoi(s.substr(0, g));
       c.cull = c.clip = c.depthSize = s.substr(g + 2) == "opt";
+    } else if (option.method == "lit") {
+      if (s == quality::kWrapSetting) c.litWrap = kFallbackWrap;
     } else if (option.method == "ray-march") {
       c.adaptive = s.rfind("adaptive", 0) == 0;
       const auto dash = s.rfind('-');
@@ -94,9 +96,6 @@ Result<render::MethodSettings> methodOfOption(const quality::QualityOption& opti
   if (!choices) return choices.error();
   auto settings = organMethod(*method, organ, textures, *choices);
   if (!settings) return settings.error();
-  if (auto* lit = std::get_if<render::LitSettings>(&*settings);
-      lit && option.setting == quality::kWrapSetting)
-    lit->wrap = kFallbackWrap;
   return settings;
 }
 

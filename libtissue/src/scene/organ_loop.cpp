@@ -183,8 +183,11 @@ Result<double> OrganLoop::upload() {
   // 3 upload: what deforms, in place (the topology and UVs never change).
   Stopwatch phase;
   const auto& m = *s.surface;
-  auto up = s.renderer->updateMesh(s.mesh, {0, m.positions(), m.normals(), m.tangents(),
-                                            s.config.uploadPlanes ? m.planes() : std::span<const Float4>{}});
+  // Stale planes or tangents (mesh::SurfaceWork off) stay as they were: nothing reads them.
+  const bool planes = s.config.uploadPlanes && m.planesCurrent(), tangents = m.tangentsCurrent();
+  auto up = s.renderer->updateMesh(
+      s.mesh, {0, m.positions(), m.normals(), tangents ? m.tangents() : std::span<const Float4>{},
+               planes ? m.planes() : std::span<const Float4>{}});
   if (!up) return up.error();
   if (const sim::Instrument* tool = s.run->instrument(); tool && s.toolMesh) {
     if (tool->config().shape.radius != s.toolBuiltRadiusMm)  // a host switched instruments
@@ -195,6 +198,10 @@ Result<double> OrganLoop::upload() {
       return moved.error();
   }
   return phase.elapsedMs();
+}
+
+mesh::SurfaceWork OrganLoop::setMeshWork(const mesh::SurfaceWork& work) {
+  return m_impl->surface->setWork(work);
 }
 
 Result<LoopFrame> OrganLoop::advance(const InstrumentInput& input, const RenderRequest* request) {
@@ -254,6 +261,8 @@ void LoopRecord::add(const LoopFrame& f, const OrganLoop& loop) {
   frames.push_back(m);
   refittedFraction +=
       double(f.mesh.refit.refittedPlanes) / double(std::max<std::size_t>(1, positions.size()));
+  planeFrames += f.mesh.planes ? 1 : 0;
+  tangentFrames += f.mesh.tangents ? 1 : 0;
   if (m.grasped == 0 && m.forceN.z > maxPushN) {
     maxPushN = m.forceN.z, pokedFrame = index;
     pokedPositions.assign(positions.begin(), positions.end());

@@ -69,7 +69,7 @@ Result<render::MethodSettings> organMethod(render::ShadingMethod method, const O
   using render::ShadingMethod;
   switch (method) {
     case ShadingMethod::Lit:
-      return render::MethodSettings{render::LitSettings{}};
+      return render::MethodSettings{render::LitSettings{.wrap = choices.litWrap}};
     case ShadingMethod::Separable: {
       // The first layer's dipole profile as a kernel (Freude eq. 5.10; pre-integrated by default,
       // eq. 5.17-5.18), with its transmittance table (Jimenez et al. 2010).

@@ -76,6 +76,7 @@ struct Scene::Impl {
     bool changed = false;                          ///< stepped since the last upload
     bool openSurface = false;                      ///< the surface has boundary edges: drawn double-sided
     bool moved = false;                            ///< changed at the last upload (deforming)
+    bool hasNormalMap = false;                     ///< its material has one (the lit method's tangents)
     double importance = 1.0;                       ///< OrganDesc::importance
     int budgetOption = -1;                         ///< the quality table option it has; -1: its own method
     std::map<int, render::MethodSettings> optionSettings;  ///< built once per option
@@ -163,6 +164,46 @@ struct Scene::Impl {
       samples.push_back({i, perMethod[m] * share});
     }
     controller->observe(samples, frameMs);
+  }
+
+  mesh::SurfaceWork meshWork(const Organ& o, render::ShadingMethod method) const {
+    if (!settings.meshWorkFollowsMethod) return {};
+    const quality::MeshWork w = quality::meshWorkOf(render::shadingMethodName(method), o.hasNormalMap);
+    return {.planes = w.planes, .tangents = w.tangents};
+  }
+  /// The organ's mesh work as its method needs it; what that brought up to date goes up with the
+  /// next upload.
+  void syncMeshWork(Organ& o, render::ShadingMethod method) {
+    const mesh::SurfaceWork work = meshWork(o, method);
+    const mesh::SurfaceWork fresh = o.loop ? o.loop->setMeshWork(work) : o.still->setWork(work);
+    if (fresh.planes || fresh.tangents) o.changed = true;
+  }
+  /// Uploads the organs changed since the last upload (GL, context current).
+  Result<void> uploadChanged() {
+    for (Organ& o : organs) {
+      if (!o.changed) continue;
+      if (o.loop) {
+        auto uploaded = o.loop->upload();
+        if (!uploaded) return uploaded.error();
+      } else {
+        // A host's shape (setPositions): what deforms; stale planes or tangents stay as they are.
+        const auto& m = *o.still;
+        auto up =
+            renderer->updateMesh(o.mesh, {0, m.positions(), m.normals(),
+                                          m.tangentsCurrent() ? m.tangents() : std::span<const Float4>{},
+                                          m.planesCurrent() ? m.planes() : std::span<const Float4>{}});
+        if (!up) return up.error();
+      }
+      o.changed = false;
+    }
+    return {};
+  }
+  /// After the budget's choice: every organ's mesh work follows its method of this frame, and
+  /// what that brought up to date is uploaded before the frame renders.
+  Result<void> followMethods() {
+    for (Organ& o : organs)
+      syncMeshWork(o, render::shadingMethod(o.method));
+    return uploadChanged();
   }
 
   Result<void> makeCurrent() {
@@ -283,7 +324,9 @@ Result<OrganId> Scene::addOrgan(const OrganDesc& desc) {
   organ.importance = std::max(0.0, desc.importance);
   // An open surface (a patch, a cut organ) must not vanish when seen from behind (issue 14).
   organ.openSurface = !(organ.loop ? organ.loop->surface() : *organ.still).boundaryVertices().empty();
-  if (!s.renderer) {  // simulation only
+  organ.hasNormalMap = organ.assets.normalMap.has_value();
+  if (!s.renderer) {  // simulation only: the method is not built, its mesh work is kept
+    s.syncMeshWork(organ, desc.method);
     s.organs.push_back(std::move(organ));
     return s.organs.size() - 1;
   }
@@ -304,6 +347,7 @@ Result<OrganId> Scene::addOrgan(const OrganDesc& desc) {
   auto method = organMethod(desc.method, organ.assets, organ.textures, organ.choices);
   if (!method) return method.error();
   organ.method = std::move(*method);
+  s.syncMeshWork(organ, desc.method);
   s.organs.push_back(std::move(organ));
   return s.organs.size() - 1;
 }
@@ -316,6 +360,7 @@ Result<void> Scene::setMethod(OrganId id, render::ShadingMethod method) {
   if (!settings) return settings.error();
   (*o)->method = std::move(*settings);
   (*o)->budgetOption = -1;  // a budget's next choice replaces it
+  m_impl->syncMeshWork(**o, method);
   return {};
 }
 
@@ -327,6 +372,7 @@ Result<void> Scene::setMethodOption(OrganId id, const quality::QualityOption& op
   if (!settings) return settings.error();
   (*o)->method = std::move(*settings);
   (*o)->budgetOption = -1;
+  m_impl->syncMeshWork(**o, render::shadingMethod((*o)->method));
   return {};
 }
 
@@ -485,20 +531,9 @@ Result<void> Scene::upload() {
   Impl& s = *m_impl;
   if (!s.renderer) return {};  // simulation only: nothing to upload
   if (auto current = s.makeCurrent(); !current) return current.error();
-  for (Impl::Organ& o : s.organs) {
+  for (Impl::Organ& o : s.organs)
     o.moved = o.changed;
-    if (!o.changed) continue;
-    if (o.loop) {
-      auto uploaded = o.loop->upload();
-      if (!uploaded) return uploaded.error();
-    } else {
-      const auto& m = *o.still;  // a host's shape (setPositions): what deforms
-      auto up = s.renderer->updateMesh(o.mesh, {0, m.positions(), m.normals(), m.tangents(), m.planes()});
-      if (!up) return up.error();
-    }
-    o.changed = false;
-  }
-  return {};
+  return s.uploadChanged();
 }
 
 Result<StepReport> Scene::update(double dtS) {
@@ -524,6 +559,7 @@ Result<LoopFrame> Scene::advance(OrganId id, const InstrumentInput& input, Image
   if (auto up = upload(); !up) return up.error();  // the other organs' changes
   s.frame(float(width) / float(height));
   if (auto b = s.applyBudget(width, height); !b) return b.error();
+  if (auto w = s.followMethods(); !w) return w.error();
   s.buildObjects();
   const RenderRequest request{
       .scene = &s.scene, .width = width, .height = height, .image = image, .host = {}};
@@ -541,6 +577,7 @@ Result<void> Scene::render(const render::HostFramebuffer& target) {
   if (auto up = upload(); !up) return up.error();
   s.frame(float(target.width) / float(target.height));
   if (auto b = s.applyBudget(target.width, target.height); !b) return b.error();
+  if (auto w = s.followMethods(); !w) return w.error();
   s.buildObjects();
   auto done = s.renderer->renderTo(s.scene, target);
   if (done) s.learnBudget(watch.elapsedMs());
@@ -555,6 +592,7 @@ Result<Image8> Scene::renderImage(int width, int height) {
   if (auto up = upload(); !up) return up.error();
   s.frame(float(width) / float(height));
   if (auto b = s.applyBudget(width, height); !b) return b.error();
+  if (auto w = s.followMethods(); !w) return w.error();
   s.buildObjects();
   auto image = s.renderer->renderImage(s.scene, width, height);
   if (image) s.learnBudget(watch.elapsedMs());

@@ -13,6 +13,7 @@
 #include "json_text.h"
 #include "tissue/core/statistics.h"
 #include "tissue/render/shading.h"
+#include "tissue/scene/budget.h"
 #include "tissue/scene/organ_loop.h"
 #include "tissue/scene/organ_methods.h"
 #include "tissue/scene/truth_view.h"
@@ -23,16 +24,16 @@ namespace {
 
 using render::ShadingMethod;
 
-// One method setting: the method, its name in the rows, the choices behind its settings.
-struct Setting {
-  ShadingMethod method;
-  std::string name;
-  scene::MethodChoices choices;
-};
+using Setting = AtlasSetting;
 
-std::vector<Setting> settingsList(bool quick) {
+}  // namespace
+
+std::vector<AtlasSetting> atlasSettings(bool quick) {
   std::vector<Setting> out;
   out.push_back({ShadingMethod::Lit, "default", {}});
+  // The quality controller's small-footprint fallback (Green 2004's wrap; Unreal Substrate's
+  // Wrap tier), scored like every other setting so its table has the row's own errors.
+  out.push_back({ShadingMethod::Lit, std::string(quality::kWrapSetting), {.litWrap = scene::kFallbackWrap}});
   const std::vector<std::string> kernels =
       quick ? std::vector<std::string>{"preintegrated", "jimenez"}
             : std::vector<std::string>{"svd", "preintegrated", "guided", "manual", "deon", "jimenez"};
@@ -68,6 +69,8 @@ std::vector<Setting> settingsList(bool quick) {
   out.push_back({ShadingMethod::Parallax, "default", {}});
   return out;
 }
+
+namespace {
 
 // One frame: its name, camera, lights and whether the organ is poked.
 struct Frame {
@@ -202,7 +205,7 @@ Result<AtlasResult> runAtlas(render::Renderer& renderer, const AtlasConfig& conf
   if (!restRays) return restRays.error();
   auto frames = makeFrames(organ, **restRays, float(w) / float(h));
   if (!frames) return frames.error();
-  const std::vector<Setting> settings = settingsList(config.quick);
+  const std::vector<Setting> settings = atlasSettings(config.quick);
 
   AtlasResult result;
   Report& report = result.output.report;

@@ -224,6 +224,14 @@ Result<BudgetBenchResult> runBudgetBench(const BudgetBenchConfig& config) {
   };
   if (config.lastFrame <= config.firstFrame || config.firstFrame < 0)
     return Error{"budget bench: give session frames first < last"};
+  // Checked before the replay and the truth: a bad budget would fail only after minutes of runs.
+  for (double b : config.budgetsMs)
+    if (!(b > 0.0) || !std::isfinite(b))
+      return Error{"budget bench: budget " + std::to_string(b) + " ms: give frame budgets in ms > 0"};
+  if (config.width < 1 || config.height < 1)
+    return Error{"budget bench: the image must be at least 1 x 1 pixels"};
+  if (config.timedFrames < 1 || config.warmupFrames < 0)
+    return Error{"budget bench: give at least 1 timed frame and 0 or more warm-up frames per run"};
   // 1 the session's poke as shapes: its scenario's loop, stepped without GL.
   auto session = scene::loadSession(config.session);
   if (!session) return session.error();

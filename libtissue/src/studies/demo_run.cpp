@@ -99,7 +99,9 @@ Result<DemoSetup> setUp(const DemoConfig& o, const scene::SceneSettings& setting
     d.context = std::move(*context);
   else
     report["render_skipped"] = context.error().message;  // simulate and update the mesh all the same
-  auto loop = detail::makeLoopScene(d.context.get(), settings);
+  scene::SceneSettings loopSettings = settings;
+  loopSettings.meshWorkFollowsMethod = false;  // the report checks the loop's planes against a full re-fit
+  auto loop = detail::makeLoopScene(d.context.get(), loopSettings);
   if (!loop) return loop.error();
   d.loop.emplace(std::move(*loop));
   const scene::OrganDesc organ{.mesh = o.meshFile,

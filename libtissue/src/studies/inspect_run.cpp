@@ -159,7 +159,9 @@ Result<std::string> inspectRun(const InspectConfig& o, scene::SceneSettings sett
     if (!offscreen) return offscreen.error();
     context = std::move(*offscreen);
   }
-  auto made = detail::makeLoopScene(context.get(), settings);
+  scene::SceneSettings sceneSettings = settings;
+  sceneSettings.meshWorkFollowsMethod = false;  // the snapshots read every attribute
+  auto made = detail::makeLoopScene(context.get(), sceneSettings);
   if (!made) return made.error();
   auto scene = std::make_optional(std::move(*made));
   if (auto added = scene->addOrgan({.scenario = scenarioFile}); !added) return added.error();

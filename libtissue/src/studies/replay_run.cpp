@@ -27,9 +27,12 @@ Result<std::string> replaySession(const ReplayConfig& o, const scene::SceneSetti
     if (!made) return made.error();
     context = std::move(*made);
   }
-  auto scene = detail::makeLoopScene(context.get(), settings);
+  scene::SceneSettings sceneSettings = settings;
+  sceneSettings.meshWorkFollowsMethod = o.pvdDir.empty();  // the series writes planes and tangents
+  auto scene = detail::makeLoopScene(context.get(), sceneSettings);
   if (!scene) return scene.error();
-  if (auto added = scene->addOrgan({.scenario = session->scenario}); !added) return added.error();
+  if (auto added = scene->addOrgan({.scenario = session->scenario, .method = o.method}); !added)
+    return added.error();
   const scene::OrganLoop& loop = *scene->loop(0);
   if (auto match = scene::checkSessionMatches(*session, loop); !match) return match.error();
 
@@ -42,11 +45,13 @@ Result<std::string> replaySession(const ReplayConfig& o, const scene::SceneSetti
     if (!series) return series.error();
     pvd = std::move(*series);
   }
+  std::vector<double> meshMs;  // phase 2 as a whole: what the method's mesh work costs
   for (std::size_t i = 0; i < session->frames.size(); ++i) {
     auto f =
         scene->advance(0, scene::sessionInput(*session, i), o.render ? &image : nullptr, o.width, o.height);
     if (!f) return Error{session->file.string() + ": frame " + std::to_string(i) + ": " + f.error().message};
     record.add(*f, loop);
+    meshMs.push_back(f->ms.meshMs);
     if (pvd)
       if (auto w = pvd->addFrame(inspect::snapshotOf(loop.run(), loop.surface())); !w) return w.error();
     if (o.render && !o.outDir.empty() && (i + 1) % std::size_t(o.imageEvery) == 0) {
@@ -63,8 +68,12 @@ Result<std::string> replaySession(const ReplayConfig& o, const scene::SceneSetti
                    {"scenario", loop.run().scenario().file.string()},
                    {"frames", session->frames.size()},
                    {"rendered", o.render},
+                   {"method", render::shadingMethodName(o.method)},
+                   {"plane_refit_frames", record.planeFrames},
+                   {"tangent_frames", record.tangentFrames},
                    {"positions_sha256", scene::positionsSha256(loop.geometricPositions())},
                    {"frame_ms", detail::msSummary(total)},
+                   {"mesh_ms", detail::msSummary(meshMs)},
                    {"phases_ms", detail::loopPhases(record.phases)},
                    {"max_contact_force_N", threeDigits(summary.maxForceN)},
                    {"divergence_events", summary.divergenceEvents},

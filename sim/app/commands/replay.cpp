@@ -12,11 +12,12 @@ namespace tissue::sim_app {
 
 void registerReplayCommand(CLI::App& app, const GlobalOptions& global, int& exitCode) {
   auto o = std::make_shared<studies::ReplayConfig>();
+  auto method = std::make_shared<std::string>("lit");
   auto* cmd = app.add_subcommand(
       "replay",
       "re-run a recorded session headless and deterministically (the deformation-plus-render test)");
   cmd->add_option("session", o->session, "session file (data/sessions/*.json, docs/SESSIONS.md)")->required();
-  cmd->add_flag("--render", o->render, "also upload and render every frame (lit, offscreen)");
+  cmd->add_flag("--render", o->render, "also upload and render every frame (with --method, offscreen)");
   cmd->add_option("--pvd", o->pvdDir,
                   "write the ParaView series (.pvd, one .vtp per frame) into this folder");
   cmd->add_option("--out", o->outDir, "folder for report.json, frames.csv and (with --render) frame images");
@@ -26,7 +27,17 @@ void registerReplayCommand(CLI::App& app, const GlobalOptions& global, int& exit
   cmd->add_option("--image-every", o->imageEvery,
                   "with --render and --out: write every this many frames (100)")
       ->check(CLI::PositiveNumber);
-  cmd->callback([o, &global, &exitCode] {
+  cmd->add_option(
+      "--method", *method,
+      "the organ's shading method (default lit): what --render draws and what the mesh phase "
+      "keeps current (local planes for ray-march; tangents for a normal map, ray-march, parallax)");
+  cmd->callback([o, method, &global, &exitCode] {
+    auto parsed = scene::parseShadingMethod(*method);
+    if (!parsed) {
+      exitCode = fail("replay", "--" + parsed.error().message);
+      return;
+    }
+    o->method = *parsed;
     exitCode = printRun("replay", global, studies::replaySession(*o, dataSceneSettings()));
   });
 }

@@ -26,6 +26,17 @@ struct SurfaceUpdateStats {
   double tangentsMs = 0.0;
   double planesMs = 0.0;
   RefitStats refit;
+  bool planes = false;    ///< the planes were re-fitted (SurfaceWork::planes)
+  bool tangents = false;  ///< the tangent frames were computed (SurfaceWork::tangents)
+};
+
+/// Which of the shading attributes the updates keep current; normals always are (every method
+/// reads them, and the planes and tangents are built on them). A renderer that shades without
+/// the local planes (all but the ray march) or without tangents (no normal map, neither the ray
+/// march nor parallax) need not pay for them (issue 16).
+struct SurfaceWork {
+  bool planes = true;    ///< the local planes' incremental re-fit
+  bool tangents = true;  ///< the tangent frames
 };
 
 /// A surface mesh whose shading attributes follow its deformation.
@@ -60,6 +71,18 @@ class DeformableSurface {
   /// As update(positions), but vertices that moved less than `toleranceMm` (mm, one for all)
   /// keep their planes; 0 is exact. No bound on the normals' error follows from it.
   SurfaceUpdateStats update(std::span<const Float3> geometricPositions, float toleranceMm);
+
+  /// What the next updates keep current. An attribute switched off goes stale: planes() or
+  /// tangents() keep the values of its last computation. Switching one on brings it up to date
+  /// at once, before anything reads it: the incremental re-fit over every vertex that moved
+  /// since the planes' last fit (what a surface that re-fitted every frame holds: exactly with
+  /// maxNormalErrorRad = 0, else both within planeRefit()'s bound of a full re-fit), the
+  /// tangents from the current normals (exactly). Returns what it brought up to date (to upload).
+  SurfaceWork setWork(const SurfaceWork& work);
+  const SurfaceWork& work() const { return m_work; }
+  /// Whether planes() and tangents() describe the current positions.
+  bool planesCurrent() const { return m_planesCurrent; }
+  bool tangentsCurrent() const { return m_tangentsCurrent; }
 
   /// How closely the incremental planes follow the positions (for the next updates).
   void setPlaneRefit(const PlaneRefitSettings& refit) { m_refit = refit; }
@@ -96,6 +119,7 @@ class DeformableSurface {
   void computeNormals();
   void computeTangents();
   void copyPlanes();
+  void refitPlanes();  ///< the incremental re-fit at the current positions (setWork's catch-up)
 
   SurfaceMesh m_mesh;
   std::vector<Float3> m_geoRest;
@@ -105,6 +129,8 @@ class DeformableSurface {
   std::vector<Float3> m_geoNormals;
   IncrementalPlaneFitter m_fitter;
   PlaneRefitSettings m_refit;
+  SurfaceWork m_work;
+  bool m_planesCurrent = true, m_tangentsCurrent = true;
   std::vector<Float3> m_normals;
   std::vector<Float4> m_tangents;
   std::vector<Float4> m_planes;

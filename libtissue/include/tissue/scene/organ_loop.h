@@ -131,8 +131,15 @@ class OrganLoop {
   /// LoopFrame::ms.uploadMs and renderMs stay 0.
   Result<LoopFrame> step(const InstrumentInput& input = {});
   /// Phase 3 only: uploads what the last step() changed (attached; the renderer's context
-  /// current). Returns its ms; 0 when not attached.
+  /// current): the planes and tangents only while the mesh work keeps them. Returns its ms; 0
+  /// when not attached.
   Result<double> upload();
+
+  /// What phase 2 keeps current besides positions and normals (mesh::DeformableSurface::setWork):
+  /// the local planes only for a method that reads them, the tangents only for one that does.
+  /// Switching one on brings it up to date at once; returns what it brought up to date (the next
+  /// upload() sends it).
+  mesh::SurfaceWork setMeshWork(const mesh::SurfaceWork& work);
 
   const scenario::ScenarioRun& run() const;
   const mesh::DeformableSurface& surface() const;
@@ -156,6 +163,8 @@ struct LoopRecord {
   std::vector<scenario::FrameMetrics> frames;
   LoopPhaseSamples phases;
   double refittedFraction = 0.0;           ///< planes re-fitted per frame, as a fraction of all (summed)
+  long planeFrames = 0;                    ///< frames whose mesh phase ran the plane re-fit (SurfaceWork)
+  long tangentFrames = 0;                  ///< frames whose mesh phase computed the tangent frames
   double maxPushN = 0.0;                   ///< N, the largest +z force on the tool without a grasp
   double maxPullN = 0.0;                   ///< N, the largest -z force while grasping
   long pokedFrame = -1, liftedFrame = -1;  ///< frames of those two (-1: none)

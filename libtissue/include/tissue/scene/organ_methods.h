@@ -29,6 +29,9 @@ namespace tissue::scene {
 
 /// The choices behind the methods' settings (plain struct with defaults: the main job's).
 struct MethodChoices {
+  /// Lit: the wrap term (render::LitSettings::wrap, unitless 0..1; 0: plain Lambert). The quality
+  /// controller's fallback and the atlas's "lit wrap" row use budget.h's kFallbackWrap.
+  float litWrap = 0.0f;
   std::string kernel =
       "preintegrated";           ///< separable model: svd, preintegrated, guided, manual, deon, jimenez
   int taps = 17;                 ///< separable taps, odd, 5..63

@@ -42,6 +42,7 @@ struct OrganDesc {
   std::filesystem::path material{};  ///< data/materials/<organ>.json; empty: defaultMaterial()
   std::filesystem::path scenario{};  ///< data/scenarios/*.json; empty: a static organ
   Mat4 model = kIdentity4;           ///< column-major, object (mm) to world (mm); rigid + uniform scale
+  /// Without GL (SceneSettings::gl) nothing is built, but its mesh work follows it all the same.
   render::ShadingMethod method = render::ShadingMethod::Lit;
   float meshScaleToMm = 1.0f;  ///< mm per file unit of a static organ's mesh (a scenario states its own)
   std::optional<MethodChoices> methods{};  ///< this organ's kernel, taps, ...; empty: SceneSettings::methods
@@ -70,6 +71,12 @@ struct SceneSettings {
   quality::ControllerSettings quality;
   /// Its table: an atlas's JSON (tissue-sim atlas --json); empty: quality::defaultQualityTable().
   std::filesystem::path qualityTable;
+  /// true: each organ's mesh update keeps only what its current method reads
+  /// (quality::meshWorkOf: the local planes for the ray march, tangents for a normal map, the ray
+  /// march and parallax), with or without a budget; a switch to a method that reads more brings
+  /// it up to date before that frame renders. false: planes and tangents every frame, whatever
+  /// the method (a host or an inspection that reads OrganLoop::surface()'s planes).
+  bool meshWorkFollowsMethod = true;
 };
 
 /// The instrument as a host moves it (world space).
@@ -114,7 +121,9 @@ class Scene {
 
   /// Loads an organ (GL: uploads it). Errors name the file at fault.
   Result<OrganId> addOrgan(const OrganDesc& organ);
-  /// Switches an organ's method at run time; the error says which this organ offers.
+  /// Switches an organ's method at run time; the error says which this organ offers. A method
+  /// that reads planes or tangents the last one did not gets them brought up to date at once
+  /// (SceneSettings::meshWorkFollowsMethod).
   Result<void> setMethod(OrganId organ, render::ShadingMethod method);
   /// Sets an organ's method and setting to a quality table option (quality/quality_table.h, the
   /// atlas's names; "lit wrap" the fallback), as the controller would; the budget, when on,

@@ -60,6 +60,19 @@ Image8 errorImage(std::span<const Float3> truth, std::span<const Float3> method,
 /// smaller or equal error, one of them strictly), by increasing cost.
 std::vector<std::size_t> paretoFront(std::span<const double> cost, std::span<const double> error);
 
+/// One method setting the atlas scores: the method, its name in the rows, the choices behind it.
+struct AtlasSetting {
+  render::ShadingMethod method = render::ShadingMethod::Lit;
+  std::string name;  ///< the rows' setting ("default", "wrap", "preintegrated-17", "6g-opt", "50", ...)
+  scene::MethodChoices choices;
+};
+
+/// Every setting the atlas scores (quick: fewer): lit plain and with the quality controller's
+/// wrap term ("wrap": scene::kFallbackWrap), separable kernels and taps, texture-space Gaussians
+/// with and without Jimenez's optimisations, ray-march samples (fixed and adaptive), parallax.
+/// Each name reads back through scene::choicesOfSetting.
+std::vector<AtlasSetting> atlasSettings(bool quick);
+
 /// One scored render.
 struct AtlasRow {
   std::string method;   ///< lit, separable, texture-space, ray-march, parallax

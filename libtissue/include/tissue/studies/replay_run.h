@@ -23,12 +23,18 @@ struct ReplayConfig {
   int imageEvery = 100;             ///< with render and outDir: every this many frames an image
   bool logContext = true;           ///< one stderr line naming the headless context (render)
   std::filesystem::path pvdDir{};   ///< non-empty: the ParaView series of every frame (inspect::PvdSeries)
+  /// The organ's method: what --render draws and what the mesh phase keeps current (the local
+  /// planes only for the ray march, tangents for a normal map, the ray march and parallax:
+  /// SceneSettings::meshWorkFollowsMethod); with pvdDir every attribute, for the series.
+  render::ShadingMethod method = render::ShadingMethod::Lit;
 };
 
 /// Replays `config.session` with the scenario it was recorded with in a scene of `scene`'s
 /// settings (its material files, shared meshes, shaders, headless backend). Returns the report
 /// as a JSON object's text: session, scenario, frames, rendered, positions_sha256, frame_ms
-/// {median, p99, max}, phases_ms (loop_report.h), max_contact_force_N, divergence_events,
+/// {median, p99, max}, method, plane_refit_frames and tangent_frames (frames whose mesh phase
+/// did that work), mesh_ms {median, p99, max} (phase 2 whole), phases_ms (loop_report.h),
+/// max_contact_force_N, divergence_events,
 /// nan_frames, "out" when it wrote into outDir, and "pvd" (the .pvd's path) with pvdDir. A session of another
 /// mesh, a missing file or a non-finite pose gives an error naming the file and frame.
 Result<std::string> replaySession(const ReplayConfig& config, const scene::SceneSettings& scene);

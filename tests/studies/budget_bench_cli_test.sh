@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# tissue-sim budget-bench end to end, shortened (a tiny image, a few frames, a short truth): the
+# JSON's results are at least three budgets, strictly increasing, each with finite frame times and
+# errors against the truth; a bad budget is one line on stderr and a non-zero exit, at once.
+set -u
+sim="$1"; dir="$2"; rm -rf "$dir"; mkdir -p "$dir"
+status=0
+fail() { echo "FAIL $*"; status=1; }
+
+"$sim" --json budget-bench --width 32 --height 24 --frames 3 --warmup 2 --spp 8 --truth-seconds 2 \
+  --out "$dir/bench" >"$dir/bench.json" 2>"$dir/bench.err" || { fail "budget-bench exit $?"; cat "$dir/bench.err"; }
+[ -s "$dir/bench/budget_bench.json" ] || fail "budget-bench --out wrote no budget_bench.json"
+python3 - "$dir/bench/budget_bench.json" <<'PY' || fail "budget-bench results out of range"
+import json, math, sys
+results = json.load(open(sys.argv[1]))["results"]
+assert isinstance(results, list) and len(results) >= 3, results
+keys = ["budget_ms", "frame_ms_median", "frame_ms_p95", "rel_rms", "fixed_best_rel_rms"]
+for r in results:
+    for k in keys:
+        assert k in r, (k, r)
+    # fixed_best_rel_rms is null when no single setting fits the budget; otherwise an error.
+    for k in keys:
+        v = r[k]
+        if k == "fixed_best_rel_rms" and v is None:
+            continue
+        assert isinstance(v, (int, float)) and math.isfinite(v), (k, r)
+    assert r["budget_ms"] > 0 and 0 < r["frame_ms_median"] <= r["frame_ms_p95"], r
+    assert 0 < r["rel_rms"] < 10, r
+    if r["fixed_best_rel_rms"] is not None:
+        assert 0 < r["fixed_best_rel_rms"] < 10, r
+budgets = [r["budget_ms"] for r in results]
+assert all(a < b for a, b in zip(budgets, budgets[1:])), budgets
+# The loosest budget fits some fixed setting (the budgets come from their measured times).
+assert results[-1]["fixed_best_rel_rms"] is not None, results[-1]
+PY
+
+# Bad input: refused before any replay or truth, in one line.
+for args in "budget-bench --budgets -5" "budget-bench --budgets 10,0" "budget-bench --width 0"; do
+  start=$(date +%s)
+  $sim $args >"$dir/out.txt" 2>"$dir/err.txt"; rc=$?
+  if [ "$rc" -eq 0 ] || [ "$(wc -l <"$dir/err.txt")" -ne 1 ]; then fail "$args: exit $rc"; cat "$dir/err.txt"; fi
+  [ $(( $(date +%s) - start )) -lt 20 ] || fail "$args: refused only after $(( $(date +%s) - start )) s"
+done
+grep -q "budget" "$dir/err.txt" || fail "a bad size names nothing: $(cat "$dir/err.txt")"
+[ "$status" -eq 0 ] && echo "ok"
+exit $status
