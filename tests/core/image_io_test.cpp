@@ -1,6 +1,7 @@
 // PNG reading: a round trip, and damaged files refused in one line before the decoder sees them.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 
@@ -55,18 +56,45 @@ TEST(ImageIo, APngCutBeforeItsEndIsRefused) {
   EXPECT_NE(read.error().message.find("IEND"), std::string::npos) << read.error().message;
 }
 
-// The PNG fuzz target's timeout: 18 bytes that stb reads as a 65535 x 65535 TGA, which it
-// decoded for minutes. Refused from the header, as more pixels than 18 bytes can hold.
+std::uint32_t bigEndian(std::uint32_t v) {
+  return (v >> 24) | ((v >> 8) & 0xff00u) | ((v << 8) & 0xff0000u) | (v << 24);
+}
+
+// A header declaring 8000 x 8000 pixels in a 57-byte file (the image fuzz target's timeout, as
+// a TGA header, which is no longer decoded): refused from the header, before decoding.
 TEST(ImageIo, AHeaderDeclaringMorePixelsThanTheFileHoldsIsRefusedAtOnce) {
-  const std::string tga("\xff\x00\x03\x00\xff\xff\xff\xff\x00\x00\x00\x00\x60\x62\xd7\x28\x0f\x67", 18);
-  const auto bad = std::filesystem::temp_directory_path() / "tissue_image_io_huge.tga";
-  ASSERT_TRUE(writeTextFileAtomic(bad, tga));
+  std::string png("\x89PNG\r\n\x1a\n", 8);
+  const auto chunk = [&png](const char* type, const std::string& data) {
+    const std::uint32_t length = bigEndian(std::uint32_t(data.size()));
+    png.append(reinterpret_cast<const char*>(&length), 4);
+    png += type;
+    png += data;
+    png.append(4, '\0');  // the CRC, which stb does not check
+  };
+  std::string header(13, '\0');
+  const std::uint32_t side = bigEndian(8000);  // within stb's own 2^30-byte bound
+  header.replace(0, 4, reinterpret_cast<const char*>(&side), 4);
+  header.replace(4, 4, reinterpret_cast<const char*>(&side), 4);
+  header[8] = 8;  // bit depth
+  header[9] = 6;  // RGBA
+  chunk("IHDR", header);
+  chunk("IEND", "");
+  const auto bad = std::filesystem::temp_directory_path() / "tissue_image_io_huge.png";
+  ASSERT_TRUE(writeTextFileAtomic(bad, png));
   auto read = readImage(bad);
   ASSERT_FALSE(read);
-  EXPECT_NE(read.error().message.find("more than a 18-byte file can hold"), std::string::npos)
+  EXPECT_NE(read.error().message.find("declares 8000 x 8000 pixels, more than a " +
+                                      std::to_string(png.size()) + "-byte file can hold"),
+            std::string::npos)
       << read.error().message;
   EXPECT_NE(read.error().message.find(bad.string()), std::string::npos);
   EXPECT_EQ(read.error().message.find('\n'), std::string::npos);
+  // Not a PNG at all (the fuzz target's TGA): one line saying to give a PNG.
+  const auto tga = std::filesystem::temp_directory_path() / "tissue_image_io_huge.tga";
+  ASSERT_TRUE(writeTextFileAtomic(tga, std::string("\xff\x00\x03\x00\xff\xff\xff\xff\x00\x00\x00\x00", 12)));
+  auto notPng = readImage(tga);
+  ASSERT_FALSE(notPng);
+  EXPECT_NE(notPng.error().message.find("give a PNG file"), std::string::npos) << notPng.error().message;
 }
 
 TEST(ImageIo, AMissingFileSaysSo) {

@@ -13,6 +13,11 @@
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STBI_FAILURE_USERMSG
+// PNG only: every texture tissue ships and reads is PNG, and Debian's stb_image JPEG decoder
+// indexes past its Huffman table on a damaged file (UBSan, found by the image fuzz target), its
+// TGA decoder loops for minutes on a damaged header. Fewer decoders, less to go wrong inside a
+// trainee's session.
+#define STBI_ONLY_PNG
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wold-style-cast"
 #pragma GCC diagnostic ignored "-Wcast-align"
@@ -89,10 +94,10 @@ Result<Image8> readImage(const std::filesystem::path& path, int forceChannels) {
   if (bytes.size() > std::size_t(std::numeric_limits<int>::max()))
     return Error{"cannot read image '" + path.string() + "': larger than 2 GiB"};
   int w = 0, h = 0, c = 0;
-  // The declared size against the file's before decoding: stb decodes a damaged header's
-  // 65535 x 65535 TGA for minutes (found by the PNG fuzz target). No format packs more than
-  // about a thousand pixels into a byte (deflate's limit is 1032:1, TGA's run-length 64:1), and
-  // the renderer's textures stop at 16384 on a side.
+  // The declared size against the file's before decoding (a damaged header declared 65535 x
+  // 65535 to stb: the image fuzz target): deflate packs at most 1032 bytes into one, so no PNG
+  // holds more than about a thousand pixels per byte, and the renderer's textures stop at 16384
+  // on a side.
   if (stbi_info_from_memory(bytes.data(), int(bytes.size()), &w, &h, &c)) {
     constexpr double kPixelsPerByte = 1100.0, kMaxSide = 16384.0;
     if (double(w) > kMaxSide || double(h) > kMaxSide ||
@@ -103,8 +108,7 @@ Result<Image8> readImage(const std::filesystem::path& path, int forceChannels) {
   }
   stbi_uc* data = stbi_load_from_memory(bytes.data(), int(bytes.size()), &w, &h, &c, forceChannels);
   if (!data) {
-    return Error{"cannot read image '" + path.string() + "': " + stbi_failure_reason() +
-                 "; give a PNG, JPEG or TGA file"};
+    return Error{"cannot read image '" + path.string() + "': " + stbi_failure_reason() + "; give a PNG file"};
   }
   const int channels = forceChannels ? forceChannels : c;
   Image8 image(w, h, channels);

@@ -214,6 +214,23 @@ Result<void> checkDeclaredCounts(const std::filesystem::path& path, const std::s
     split = true;
     if (!(in >> faces)) faces = 0;
   }
+  // OpenMesh's reader takes the counts from the line after the keyword line whatever that line
+  // holds, and reads them as unsigned ("-01" is 4294967295 faces: the OFF fuzz target found it
+  // looping); so where the keyword line holds digits, the next line must pass as counts too.
+  if (!keywordOnly) {
+    std::streampos back = in.tellg();
+    const int backLine = lineNo;
+    std::string following;
+    double v2 = 0, f2 = 0;
+    if (nextContent(following) && std::sscanf(following.c_str(), "%lf %lf", &v2, &f2) >= 1 &&
+        (v2 < 0 || f2 < 0 || (v2 + f2) * 5.0 > double(size))) {
+      vertices = v2;
+      faces = f2;
+    }
+    in.clear();
+    in.seekg(back);
+    lineNo = backLine;
+  }
   if (vertices < 0 || faces < 0 || (vertices + faces) * 5.0 > double(size)) {
     // Printed as doubles: a count beyond 2^63 must not be converted to an integer (UB).
     auto count = [](double n) {

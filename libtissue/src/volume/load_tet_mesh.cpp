@@ -143,7 +143,10 @@ VtkContent sniffVtk(const std::filesystem::path& path) {
 
 namespace {
 
+/// An integer as C++ streams read it (VTK's `>>`): an optional sign, then digits only.
 bool isInteger(std::string_view token) {
+  if (token.size() > 1 && token[0] == '+' && std::isdigit(static_cast<unsigned char>(token[1])))
+    token.remove_prefix(1);  // from_chars takes no '+'; the stream does ("CELLS 2 +0": the VTK fuzzer)
   long long v = 0;
   const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), v);
   return ec == std::errc() && end == token.data() + token.size();
@@ -183,6 +186,20 @@ Result<void> checkTextCellSections(const std::filesystem::path& path, const std:
     }
     return {};
   };
+  // A section's count must be a whole number >= 0: VTK's stream reads a number's prefix ("2x"
+  // as 2, then "x" as the next word), so anything else is refused here, not left to VTK.
+  const auto count = [&](std::string_view token, const std::string& section,
+                         std::size_t at) -> Result<std::uint64_t> {
+    long long n = -1;
+    if (isInteger(token)) {
+      const auto digits = token.substr(token[0] == '+' ? 1 : 0);
+      std::from_chars(digits.data(), digits.data() + digits.size(), n);
+    }
+    if (n < 0)
+      return Error{path.string() + ":" + std::to_string(at) + ": " + section + " count '" +
+                   std::string(token) + "' is not a whole number >= 0; fix the section header"};
+    return std::uint64_t(n);
+  };
   for (auto token = next(); !token.empty(); token = next()) {
     // VTK matches its keywords by a case-blind prefix (strncmp of the lower-cased word), so
     // "CELLSPOINTS" is a CELLS section to it (the VTK fuzzer); the same rule here.
@@ -199,11 +216,11 @@ Result<void> checkTextCellSections(const std::filesystem::path& path, const std:
       // A coordinate that does not read as a number makes VTK go on reading keywords from
       // inside it ("10CELLS0 10 0" turned into CELLS 10 0, a SIGSEGV; the VTK fuzzer).
       const std::size_t at = line;
-      const auto count = next();
+      const auto declared = count(next(), "POINTS", at);
+      if (!declared) return declared.error();
+      const std::uint64_t n = *declared;
       next();  // the type
-      long long n = 0;
-      if (!isInteger(count) || (n = std::stoll(std::string(count))) < 0) continue;  // VTK reports it
-      const std::uint64_t values = std::min<std::uint64_t>(std::uint64_t(n), text.size()) * 3;
+      const std::uint64_t values = std::min<std::uint64_t>(n, text.size()) * 3;
       for (std::uint64_t k = 0; k < values; ++k) {
         const auto value = next();
         if (value.empty()) break;  // truncated: VTK reports it, with nothing left to misread
@@ -216,15 +233,16 @@ Result<void> checkTextCellSections(const std::filesystem::path& path, const std:
     }
     if (section.empty()) continue;
     const std::size_t at = line;
-    const auto first = next();
-    long long a = 0, b = 0;
-    if (!isInteger(first) || (a = std::stoll(std::string(first))) < 0) continue;  // VTK reports it
+    const auto first = count(next(), section, at);
+    if (!first) return first.error();
+    const std::uint64_t a = *first;
     if (section == "CELL_TYPES") {
-      if (auto ok = needIntegers(std::uint64_t(a), section, at); !ok) return ok;
+      if (auto ok = needIntegers(a, section, at); !ok) return ok;
       continue;
     }
-    const auto second = next();
-    if (!isInteger(second) || (b = std::stoll(std::string(second))) < 0) continue;
+    const auto second = count(next(), section, at);
+    if (!second) return second.error();
+    const std::uint64_t b = *second;
     const std::size_t save = pos, saveLine = line;
     if (next() == "OFFSETS") {  // the version 5 layout: OFFSETS type, a ints, CONNECTIVITY type, b ints
       next();
@@ -275,10 +293,15 @@ Result<void> checkLegacyVtkCounts(const std::filesystem::path& path) {
   std::string line;
   bool ascii = false;
   for (int k = 0; k < 8 && std::getline(in, line); ++k) {
-    if (k == 2) ascii = line.rfind("ASCII", 0) == 0;
+    if (k == 2) {  // VTK lower-cases the line first: "ASCIi" is a text file to it (the VTK fuzzer)
+      std::string lower = line.substr(0, 5);
+      std::transform(lower.begin(), lower.end(), lower.begin(),
+                     [](unsigned char c) { return char(std::tolower(c)); });
+      ascii = lower == "ascii";
+    }
     if (line.rfind("POINTS", 0) != 0) continue;
     double n = 0;
-    if (std::sscanf(line.c_str() + 6, "%lf", &n) != 1) return {};
+    if (std::sscanf(line.c_str() + 6, "%lf", &n) != 1) break;  // the text check below refuses it
     // Each point takes at least 6 bytes as text ("0 0 0 ") and 12 in binary floats.
     if (n < 0 || n * 6.0 > double(size)) {
       std::ostringstream declared;  // not via an integer: 1e29 does not fit one (the VTK fuzzer, UBSan)
@@ -320,8 +343,11 @@ Result<void> checkXmlVtkCounts(const std::filesystem::path& path) {
     const double n = digits ? std::stod(value) : -1.0;
     const double bound = name == "NumberOfComponents" ? kMaxComponents : maxCount;
     if (!digits || n > bound) {
+      std::string shown;  // the value as one printable line (it may run over lines: the VTU fuzzer)
+      for (const char c : value.substr(0, 40))
+        shown += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
       const auto line = 1 + std::count(text.begin(), text.begin() + std::ptrdiff_t(at), '\n');
-      return Error{path.string() + ":" + std::to_string(line) + ": " + name + "=\"" + value +
+      return Error{path.string() + ":" + std::to_string(line) + ": " + name + "=\"" + shown +
                    (digits ? "\" is more than a " + std::to_string(text.size()) + "-byte file can hold"
                            : "\" is not a whole number") +
                    "; fix the attribute"};
