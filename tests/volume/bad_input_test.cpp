@@ -142,44 +142,35 @@ TEST(VolumeBadInput, CellsThatDoNotFillTheirIntegersAreOneLineNotACrash) {
               "cells_short.vtk:11: CELLS declares 3 cells in 10 integers, but cell 3 does not fit in them");
   expectError("cells_over.vtk", legacyVtk("4 0 1 2 3\n9 1 2 3 4\n", 2, 10, "10\n10\n"),
               "cells_over.vtk:11: CELLS declares 2 cells in 10 integers, but cell 2 does not fit in them");
+  // The two-tet file with one piece of its text replaced.
+  const auto edited = [&cells](const std::string& from, const std::string& to) {
+    std::string text = legacyVtk(cells, 2, 10, "10\n10\n");
+    text.replace(text.find(from), from.size(), to);
+    return text;
+  };
   // VTK reads a keyword by its prefix, in any case: "CELLSPOINTS 5 0" is CELLS to it.
-  std::string prefixed = legacyVtk(cells, 2, 10, "10\n10\n");
-  prefixed.replace(prefixed.find("CELLS 2 10"), 10, "cellsPOINTS 5 0");
-  expectError("cells_prefix.vtk", prefixed,
+  expectError("cells_prefix.vtk", edited("CELLS 2 10", "cellsPOINTS 5 0"),
               "cells_prefix.vtk:11: CELLS declares 5 cells in 0 integers, but cell 1 does not fit in them");
   // A coordinate glued to a keyword: VTK 9.1 went on reading "CELLS0 10 0" as a CELLS section.
-  std::string glued = legacyVtk(cells, 2, 10, "10\n10\n");
-  glued.replace(glued.find("1 0 0\n"), 6, "10CELLS0 10 0\n");
-  expectError("points_glued.vtk", glued,
+  expectError("points_glued.vtk", edited("1 0 0\n", "10CELLS0 10 0\n"),
               "points_glued.vtk:5: POINTS declares 5 points, but coordinate 4 is '10CELLS0'");
   expectError("cells_spare.vtk", legacyVtk("3 0 1 2\n4 1 2 3 4\n0\n", 2, 10, "10\n10\n"),
               "cells_spare.vtk:11: CELLS declares 2 cells in 10 integers, but its cells hold 9");
   // A count with a sign: VTK's stream reads "+0" as 0 (a null buffer written) and "+3" as 3 (a
   // silent heap overflow inside VTK, the open crash of the VTK fuzzer); counted as VTK reads them.
-  std::string signedZero = legacyVtk(cells, 2, 10, "10\n10\n");
-  signedZero.replace(signedZero.find("CELLS 2 10"), 10, "CELLS 2 +0");
-  expectError(
-      "cells_plus_zero.vtk", signedZero,
-      "cells_plus_zero.vtk:11: CELLS declares 2 cells in 0 integers, but cell 1 does not fit in them");
-  std::string signedThree = legacyVtk(cells, 2, 10, "10\n10\n");
-  signedThree.replace(signedThree.find("CELLS 2 10"), 10, "CELLS 2 +3");
-  expectError(
-      "cells_plus_three.vtk", signedThree,
-      "cells_plus_three.vtk:11: CELLS declares 2 cells in 3 integers, but cell 1 does not fit in them");
+  expectError("cells_plus_zero.vtk", edited("CELLS 2 10", "CELLS 2 +0"),
+              "cells_plus_zero.vtk:11: CELLS declares 2 cells in 0 integers, but cell 1 does not fit");
+  expectError("cells_plus_three.vtk", edited("CELLS 2 10", "CELLS 2 +3"),
+              "cells_plus_three.vtk:11: CELLS declares 2 cells in 3 integers, but cell 1 does not fit");
   // VTK reads "ASCIi" as ASCII (it lower-cases the line): the text checks apply to it too.
-  std::string mixedCase = legacyVtk(cells, 2, 1, "10\n10\n");
-  mixedCase.replace(mixedCase.find("ASCII"), 5, "ASCIi");
-  expectError(
-      "cells_mixed_case.vtk", mixedCase,
-      "cells_mixed_case.vtk:11: CELLS declares 2 cells in 1 integers, but cell 1 does not fit in them");
+  std::string mixedCase = edited("ASCII", "ASCIi");
+  mixedCase.replace(mixedCase.find("CELLS 2 10"), 10, "CELLS 2 1");
+  expectError("cells_mixed_case.vtk", mixedCase,
+              "cells_mixed_case.vtk:11: CELLS declares 2 cells in 1 integers, but cell 1 does not fit");
   // A count that is not a whole number is refused, not left to VTK's prefix reading.
-  std::string glue = legacyVtk(cells, 2, 10, "10\n10\n");
-  glue.replace(glue.find("CELLS 2 10"), 10, "CELLS 2 1x");
-  expectError("cells_glued_count.vtk", glue,
+  expectError("cells_glued_count.vtk", edited("CELLS 2 10", "CELLS 2 1x"),
               "cells_glued_count.vtk:11: CELLS count '1x' is not a whole number");
-  std::string points = legacyVtk(cells, 2, 10, "10\n10\n");
-  points.replace(points.find("POINTS 5"), 8, "POINTS 5.5");
-  expectError("points_fraction.vtk", points,
+  expectError("points_fraction.vtk", edited("POINTS 5", "POINTS 5.5"),
               "points_fraction.vtk:5: POINTS count '5.5' is not a whole number");
 }
 
