@@ -244,6 +244,13 @@ TEST(LoadMesh, HugeDeclaredCountsFailAtOnceWithOneLine) {
   const auto negative = loadError(writeTestFile("negative.off", "OFF 2\n3 -01\n0 0 0\n10 0 0\n0 10 0\n"));
   EXPECT_NE(negative.find("negative.off: the OFF header declares"), std::string::npos) << negative;
   EXPECT_EQ(negative.find('\n'), std::string::npos);
+  // Read word by word as OpenMesh does: "10-0" is two words, so the faces start inside the vertex
+  // lines and a corner count of "-01" (4294967295) follows (the OFF fuzz target's timeout).
+  const auto shifted = loadError(
+      writeTestFile("shifted.off", "OFF\n4 4 6\n0 100 0\n10 0 0\n0 10-0\n0 00\n0 010 0 0\n0 0-01 3 1\n"));
+  EXPECT_NE(shifted.find("shifted.off: OFF face"), std::string::npos) << shifted;
+  EXPECT_NE(shifted.find("corners, but the mesh has 4 vertices (read word by word"), std::string::npos)
+      << shifted;
   std::string stl(84 + 50, '\0');
   const std::uint32_t n = 4000000000u;
   std::memcpy(stl.data() + 80, &n, 4);

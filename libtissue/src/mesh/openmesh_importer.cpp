@@ -265,6 +265,49 @@ Result<void> checkDeclaredCounts(const std::filesystem::path& path, const std::s
   return {};
 }
 
+/// ASCII OFF as OpenMesh's reader takes it: the keyword line, then unsigned counts and values
+/// read word by word across lines ("-01" is 4294967295; a glued "10-0" shifts every later read),
+/// each face's corner count an unsigned it allocates for, and on a failed stream the previous
+/// count again for every face left (found by the OFF fuzz target: OpenMesh adding faces until
+/// the timeout). So the same reads run here first, with the same standard library: a corner
+/// count beyond the vertices, or data that breaks before the last face, is refused.
+Result<void> checkOffAsOpenMeshReadsIt(const std::filesystem::path& path, std::uint64_t size) {
+  std::ifstream in(path, std::ios::binary);
+  std::string header;
+  std::getline(in, header);
+  const auto off = header.find("OFF");
+  if (off == std::string::npos || header.find("BINARY") != std::string::npos) return {};
+  const std::string prefix = header.substr(0, off);  // [ST][C][N]: the reader's options
+  const bool normals = prefix.find('N') != std::string::npos, colours = prefix.find('C') != std::string::npos;
+  unsigned vertices = 0, faces = 0, edges = 0;
+  in >> vertices >> faces >> edges;
+  if ((std::uint64_t(vertices) + faces) * 5 > size)
+    return Error{path.string() + ": the OFF counts read as " + std::to_string(vertices) + " vertices and " +
+                 std::to_string(faces) + " faces, more than a " + std::to_string(size) +
+                 "-byte file can hold; fix the counts after the OFF line"};
+  std::string rest;
+  for (unsigned v = 0; v < vertices && !in.eof(); ++v) {
+    float x = 0;
+    in >> x >> x >> x;
+    if (normals) in >> x >> x >> x;
+    std::getline(in, rest);
+  }
+  for (unsigned f = 0; f < faces; ++f) {
+    unsigned corners = 0, index = 0;
+    if (!(in >> corners))
+      return Error{path.string() + ": the OFF data breaks before face " + std::to_string(f + 1) + " of " +
+                   std::to_string(faces) + " (read word by word, as OpenMesh does); fix the file"};
+    if (corners > vertices)
+      return Error{path.string() + ": OFF face " + std::to_string(f + 1) + " declares " +
+                   std::to_string(corners) + " corners, but the mesh has " + std::to_string(vertices) +
+                   " vertices (read word by word, as OpenMesh does); fix the face"};
+    for (unsigned k = 0; k < corners; ++k)
+      in >> index;
+    if (colours) std::getline(in, rest);
+  }
+  return {};
+}
+
 /// A VTK surface (legacy POLYDATA or XML PolyData, read by the volume module's VTK adapter).
 Result<RawMesh> readVtk(const std::filesystem::path& path) {
   auto surface = volume::readVtkSurface(path);
@@ -310,6 +353,11 @@ Result<RawMesh> readRawMesh(const std::filesystem::path& path) {
   if (auto scan = scanTextForNonFinite(path, ext); !scan) return scan.error();
   if (ext == ".ply") return readPly(path);
   if (auto counts = checkDeclaredCounts(path, ext); !counts) return counts.error();
+  if (ext == ".off") {
+    std::error_code sizeError;
+    const auto size = std::uint64_t(std::filesystem::file_size(path, sizeError));
+    if (auto stream = checkOffAsOpenMeshReadsIt(path, sizeError ? 0 : size); !stream) return stream.error();
+  }
   RawMesh raw;
   RawImporter importer(raw);
   OpenMesh::IO::Options options = OpenMesh::IO::Options::FaceTexCoord | OpenMesh::IO::Options::VertexTexCoord;
