@@ -251,6 +251,17 @@ TEST(LoadMesh, HugeDeclaredCountsFailAtOnceWithOneLine) {
   EXPECT_NE(shifted.find("shifted.off: OFF face"), std::string::npos) << shifted;
   EXPECT_NE(shifted.find("corners, but the mesh has 4 vertices (read word by word"), std::string::npos)
       << shifted;
+  // Binary OFF: a face's corner count is a raw uint32 that OpenMesh loops over (a fuzz timeout).
+  std::string binary = "OFF BINARY\n";
+  for (const std::uint32_t word : {3u, 1u, 0u})
+    binary.append(reinterpret_cast<const char*>(&word), 4);
+  binary.append(36, '\0');
+  const std::uint32_t corners4g = 4000000000u;
+  binary.append(reinterpret_cast<const char*>(&corners4g), 4);
+  const auto binaryError = loadError(writeTestFile("corners_binary.off", binary));
+  EXPECT_NE(binaryError.find("corners_binary.off: binary OFF face 1 of 1 declares 4000000000 corners"),
+            std::string::npos)
+      << binaryError;
   std::string stl(84 + 50, '\0');
   const std::uint32_t n = 4000000000u;
   std::memcpy(stl.data() + 80, &n, 4);

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string_view>
 
@@ -276,9 +277,40 @@ Result<void> checkOffAsOpenMeshReadsIt(const std::filesystem::path& path, std::u
   std::string header;
   std::getline(in, header);
   const auto off = header.find("OFF");
-  if (off == std::string::npos || header.find("BINARY") != std::string::npos) return {};
+  if (off == std::string::npos) return {};
   const std::string prefix = header.substr(0, off);  // [ST][C][N]: the reader's options
   const bool normals = prefix.find('N') != std::string::npos, colours = prefix.find('C') != std::string::npos;
+  if (header.find("BINARY") != std::string::npos) {
+    // Binary: little-endian uint32 counts, 12 bytes a vertex (+12 normal, +12 colour as three
+    // ints, +8 texture coordinates), each face a uint32 corner count and its indices.
+    const auto word = [&in]() -> std::optional<std::uint32_t> {
+      std::uint8_t b[4];
+      if (!in.read(reinterpret_cast<char*>(b), 4)) return std::nullopt;
+      return std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 |
+             std::uint32_t(b[3]) << 24;
+    };
+    const auto nv = word(), nf = word(), ne = word();
+    if (!nv || !nf || !ne) return {};  // the reader reports the truncated header
+    const std::uint64_t vertexBytes =
+        12 + (normals ? 12 : 0) + (colours ? 12 : 0) + (prefix.find("ST") == 0 ? 8 : 0);
+    if (*nv * vertexBytes + std::uint64_t(*nf) * 4 > size)
+      return Error{path.string() + ": the binary OFF header declares " + std::to_string(*nv) +
+                   " vertices and " + std::to_string(*nf) + " faces, more than a " + std::to_string(size) +
+                   "-byte file can hold; fix the counts or the truncated file"};
+    in.seekg(std::streamoff(*nv * vertexBytes), std::ios::cur);
+    for (std::uint32_t f = 0; f < *nf; ++f) {
+      const auto corners = word();
+      if (!corners || *corners > *nv)
+        return Error{path.string() + ": binary OFF face " + std::to_string(f + 1) + " of " +
+                     std::to_string(*nf) +
+                     (corners ? " declares " + std::to_string(*corners) + " corners, but the mesh has " +
+                                    std::to_string(*nv) + " vertices"
+                              : " is past the end of the file") +
+                     "; fix the file"};
+      in.seekg(std::streamoff(*corners) * 4, std::ios::cur);
+    }
+    return {};
+  }
   unsigned vertices = 0, faces = 0, edges = 0;
   in >> vertices >> faces >> edges;
   if ((std::uint64_t(vertices) + faces) * 5 > size)
