@@ -290,7 +290,9 @@ Result<void> checkOffAsOpenMeshReadsIt(const std::filesystem::path& path, std::u
              std::uint32_t(b[3]) << 24;
     };
     const auto nv = word(), nf = word(), ne = word();
-    if (!nv || !nf || !ne) return {};  // the reader reports the truncated header
+    if (!nv || !nf || !ne)  // OpenMesh would go on with counts it never read
+      return Error{path.string() +
+                   ": the binary OFF header ends before its three counts; the file is truncated"};
     const std::uint64_t vertexBytes =
         12 + (normals ? 12 : 0) + (colours ? 12 : 0) + (prefix.find("ST") == 0 ? 8 : 0);
     if (*nv * vertexBytes + std::uint64_t(*nf) * 4 > size)
