@@ -251,6 +251,9 @@ TEST(LoadMesh, HugeDeclaredCountsFailAtOnceWithOneLine) {
   EXPECT_NE(shifted.find("shifted.off: OFF face"), std::string::npos) << shifted;
   EXPECT_NE(shifted.find("corners, but the mesh has 4 vertices (read word by word"), std::string::npos)
       << shifted;
+  const auto noCounts = loadError(writeTestFile("no_counts.off", "OFF\n"));
+  EXPECT_NE(noCounts.find("no_counts.off: no vertex and face counts after the OFF line"), std::string::npos)
+      << noCounts;
   // Binary OFF: a face's corner count is a raw uint32 that OpenMesh loops over (a fuzz timeout).
   std::string binary = "OFF BINARY\n";
   for (const std::uint32_t word : {3u, 1u, 0u})

@@ -314,7 +314,10 @@ Result<void> checkOffAsOpenMeshReadsIt(const std::filesystem::path& path, std::u
     return {};
   }
   unsigned vertices = 0, faces = 0, edges = 0;
-  in >> vertices >> faces >> edges;
+  if (!(in >> vertices >> faces))  // OpenMesh would go on with its counts uninitialised
+    return Error{path.string() +
+                 ": no vertex and face counts after the OFF line; add them ('vertices faces edges')"};
+  in >> edges;
   if ((std::uint64_t(vertices) + faces) * 5 > size)
     return Error{path.string() + ": the OFF counts read as " + std::to_string(vertices) + " vertices and " +
                  std::to_string(faces) + " faces, more than a " + std::to_string(size) +
