@@ -3,6 +3,7 @@
 // tracer's sample rate on that liver with each. Prints median, p99 and worst rates over batches:
 //   tissue_truth_bench [--batches N] [--rays N] [--threads N] [--spp N] [--roulette W] [--tracer-only 1]
 //                      [--liver-material 1] [--bvh 0] [--spectral 0] [--local-majorants 0]
+//                      [--roughness A] (the outer surface's Beckmann roughness; 0: no glossy term)
 // The random-walk rays start just inside the surface (a random point of a random triangle, 0.01 mm
 // in) with a random inward direction, as the walk's queries do; camera rays come from a pinhole
 // camera framing the liver. "nearest 1.1" is the layer-depth query: the nearest surface point
@@ -118,6 +119,7 @@ void printRates(const char* what, const char* backend, const std::vector<double>
 int main(int argc, char** argv) {
   int batches = 30, threads = 1, spp = 16;
   double roulette = -1.0;  // < 0: the default
+  double roughness = 0.17;
   bool tracerOnly = false, liverMaterial = false, withBvh = true, spectral = true, localMajorants = true;
   std::size_t rayCount = 200000;
   for (int i = 1; i + 1 < argc; i += 2) {
@@ -131,6 +133,7 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--bvh")) withBvh = std::atoi(argv[i + 1]) != 0;
     if (!std::strcmp(argv[i], "--spectral")) spectral = std::atoi(argv[i + 1]) != 0;
     if (!std::strcmp(argv[i], "--local-majorants")) localMajorants = std::atoi(argv[i + 1]) != 0;
+    if (!std::strcmp(argv[i], "--roughness")) roughness = std::atof(argv[i + 1]);
   }
   const std::string path = std::string(TISSUE_BENCH_DATA_DIR) + "/meshes/liver.obj";
   auto mesh = mesh::loadMesh(path);
@@ -215,7 +218,7 @@ int main(int argc, char** argv) {
     s.passes = 2;
     s.threads = threads;
     s.intersector = kind;
-    s.surfaceRoughness = 0.17;
+    s.surfaceRoughness = roughness;
     if (roulette >= 0.0) s.rouletteWeight = roulette;
     s.spectral = spectral;
     s.localMajorants = localMajorants;

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # One fuzz pass: tests/fuzz/run_fuzzer.sh FUZZER SEEDS_DIR WORK_DIR SECONDS [RUNS [SEED]]
-# Runs libFuzzer for SECONDS (or RUNS executions when given; -1: no limit) with libFuzzer's SEED
-# (default 0: a random one; the test suite's short pass gives 1, so that a pass that fails on one
-# machine fails the same way on the next) on a working corpus WORK_DIR that
-# starts from the committed seeds (the seeds are never written). Bounded per input: 10 s and
+# Runs libFuzzer for RUNS executions (-1: no limit), at most SECONDS, with libFuzzer's SEED
+# (default 0: a random one) on a working corpus WORK_DIR that starts from the committed seeds (the
+# seeds are never written). With RUNS given the working corpus starts afresh, so a pass with a
+# fixed SEED is reproducible: the test suite's short pass (RUNS 60000, SEED 1) executes the same
+# inputs on every machine that finishes it inside SECONDS, and a pass that fails on CI fails the
+# same way here. Bounded per input: 10 s and
 # 2 GiB (a slower or larger input is a finding). Exit 0 only without a crash, leak, timeout or
 # out-of-memory; the final line gives the executions done. The whole output is kept in
 # WORK_DIR/../<fuzzer>.log (a finding's report starts far above the last lines shown).
@@ -17,6 +19,7 @@
 set -euo pipefail
 fuzzer="$1" seeds="$2" work="$3" seconds="$4" runs="${5:--1}" seed="${6:-0}"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+[ "$runs" -gt 0 ] && rm -rf "$work"
 mkdir -p "$work"
 artifacts="$work/../artifacts-$(basename "$fuzzer")/"
 mkdir -p "$artifacts"
