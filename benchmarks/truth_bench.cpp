@@ -4,6 +4,9 @@
 //   tissue_truth_bench [--batches N] [--rays N] [--threads N] [--spp N] [--roulette W] [--tracer-only 1]
 //                      [--liver-material 1] [--bvh 0] [--spectral 0] [--local-majorants 0]
 //                      [--roughness A] (the outer surface's Beckmann roughness; 0: no glossy term)
+//                      [--next-event-mis 0] (the path's own next events alone)
+//                      [--pixel-samples N] (then only: N samples of the centre pixel, one per pass,
+//                      and how their variance is shared: quantiles, the top 0.1 % and 1 %)
 // The random-walk rays start just inside the surface (a random point of a random triangle, 0.01 mm
 // in) with a random inward direction, as the walk's queries do; camera rays come from a pinhole
 // camera framing the liver. "nearest 1.1" is the layer-depth query: the nearest surface point
@@ -114,6 +117,56 @@ void printRates(const char* what, const char* backend, const std::vector<double>
       what, backend, s.median * 1e-6, quantile(rates, 0.01) * 1e-6, worst * 1e-6, s.max * 1e-6, hits, rays);
 }
 
+// The centre pixel of the 80 x 60 view alone (a 1 x 1 image of the same pixel footprint), one
+// sample per pass: each sample's red value from the running means, and how the sum of squares
+// (the variance) is shared among the largest samples. A heavy tail shows as a large share of the
+// top 0.1 %.
+void printPixelSamples(const truth::TruthMesh& mesh, const truth::TruthMaterial& material,
+                       std::span<const truth::TruthLight> lights, truth::TruthCamera camera,
+                       truth::PathTraceSettings s, int samples) {
+  camera.verticalFovDeg /= float(s.height);
+  s.width = s.height = 1;
+  s.samplesPerPass = 1;
+  s.passes = samples;
+  std::vector<double> values;
+  double previousSum = 0.0;
+  s.onPass = [&](const truth::PathTraceProgress& p) {
+    const double sum = double(p.image->radiance[0].x) * p.samplesPerPixel;
+    values.push_back(sum - previousSum);
+    previousSum = sum;
+    return true;
+  };
+  auto image = truth::renderPathTraced(mesh, material, lights, camera, s);
+  if (!image || values.empty()) {
+    std::printf("pixel samples: %s\n", image ? "none" : image.error().message.c_str());
+    return;
+  }
+  double mean = 0.0, sq = 0.0;
+  for (double v : values) {
+    mean += v;
+    sq += v * v;
+  }
+  mean /= double(values.size());
+  sq /= double(values.size());
+  std::vector<double> sorted = values;
+  std::sort(sorted.begin(), sorted.end());
+  auto share = [&](double fraction) {  // of the second moment, from the largest samples
+    const std::size_t k = std::max<std::size_t>(1, std::size_t(fraction * double(sorted.size())));
+    double top = 0.0;
+    for (std::size_t i = sorted.size() - k; i < sorted.size(); ++i)
+      top += sorted[i] * sorted[i];
+    return top / (sq * double(sorted.size()));
+  };
+  std::printf(
+      "centre pixel, red, %zu samples (MIS %d): mean %.4g, rel variance %.2f; quantiles / mean: "
+      "p50 %.3g p90 %.3g p99 %.3g p99.9 %.3g max %.3g; second moment from the top 0.1%% %.2f, "
+      "top 1%% %.2f, zero samples %.2f\n",
+      values.size(), s.nextEventMis ? 1 : 0, mean, (sq - mean * mean) / (mean * mean),
+      quantile(sorted, 0.5) / mean, quantile(sorted, 0.9) / mean, quantile(sorted, 0.99) / mean,
+      quantile(sorted, 0.999) / mean, sorted.back() / mean, share(0.001), share(0.01),
+      double(std::count(sorted.begin(), sorted.end(), 0.0)) / double(sorted.size()));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -121,6 +174,8 @@ int main(int argc, char** argv) {
   double roulette = -1.0;  // < 0: the default
   double roughness = 0.17;
   bool tracerOnly = false, liverMaterial = false, withBvh = true, spectral = true, localMajorants = true;
+  bool nextEventMis = true;
+  int centreSamples = 0;
   std::size_t rayCount = 200000;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--batches")) batches = std::atoi(argv[i + 1]);
@@ -134,6 +189,8 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--spectral")) spectral = std::atoi(argv[i + 1]) != 0;
     if (!std::strcmp(argv[i], "--local-majorants")) localMajorants = std::atoi(argv[i + 1]) != 0;
     if (!std::strcmp(argv[i], "--roughness")) roughness = std::atof(argv[i + 1]);
+    if (!std::strcmp(argv[i], "--next-event-mis")) nextEventMis = std::atoi(argv[i + 1]) != 0;
+    if (!std::strcmp(argv[i], "--pixel-samples")) centreSamples = std::atoi(argv[i + 1]);
   }
   const std::string path = std::string(TISSUE_BENCH_DATA_DIR) + "/meshes/liver.obj";
   auto mesh = mesh::loadMesh(path);
@@ -222,6 +279,11 @@ int main(int argc, char** argv) {
     if (roulette >= 0.0) s.rouletteWeight = roulette;
     s.spectral = spectral;
     s.localMajorants = localMajorants;
+    s.nextEventMis = nextEventMis;
+    if (centreSamples > 0) {
+      printPixelSamples(truthMesh, material, lights, camera, s, centreSamples);
+      return 0;
+    }
     const double cpu0 = bench::cpuSeconds();
     auto image = truth::renderPathTraced(truthMesh, material, lights, camera, s);
     const double cpu = bench::cpuSeconds() - cpu0;
@@ -275,10 +337,11 @@ int main(int argc, char** argv) {
                 std::sqrt(bandNoise2[0] / bandSignal2[0]), std::sqrt(bandNoise2[1] / bandSignal2[1]),
                 std::sqrt(bandNoise2[2] / bandSignal2[2]));
     std::printf(
-        "  per-sample rel variance %.3f, depth queries per path %.1f, next events per path %.1f, "
-        "efficiency 1/(var * CPU s per organ sample) %.0f\n",
+        "  per-sample rel variance %.3f, depth queries per path %.1f, next events per path %.1f (MIS "
+        "flights %.1f), efficiency 1/(var * CPU s per organ sample) %.0f\n",
         noise2 / signal2 * image->samplesPerPixel, double(image->depthQueries) / double(image->paths),
         double(image->nextEvents) / double(image->paths),
+        double(image->guidedNextEvents) / double(image->paths),
         double(covered) * image->samplesPerPixel / cpu / (noise2 / signal2 * image->samplesPerPixel));
   }
   return 0;

@@ -80,7 +80,8 @@ std::string truthCacheName(const std::string& frame, std::uint64_t key) {
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016" PRIx64, key);
   // The tracer's version: raise it when the estimator changes, so that old images are not reused.
-  return "truth_v2_" + frame + "_" + hex + ".bin";  // v2: local majorants (a new estimator, new noise)
+  // v2: local majorants; v3: the next-event MIS towards the beams (new estimators, new noise).
+  return "truth_v3_" + frame + "_" + hex + ".bin";
 }
 
 std::optional<truth::TruthImage> readTruthCache(const std::filesystem::path& file) {

@@ -230,6 +230,7 @@ Result<TruthImage> renderPathTraced(const TruthMesh& mesh, const TruthMaterial& 
       total.nextEvents += st.nextEvents;
       total.skippedEvents += st.skippedEvents;
       total.depthQueries += st.depthQueries;
+      total.guidedEvents += st.guidedEvents;
     };
     std::vector<std::thread> pool;
     try {
@@ -264,6 +265,7 @@ Result<TruthImage> renderPathTraced(const TruthMesh& mesh, const TruthMaterial& 
     image.nextEvents += st.nextEvents;
     image.skippedNextEvents += st.skippedEvents;
     image.depthQueries += st.depthQueries;
+    image.guidedNextEvents += st.guidedEvents;
   }
   image.paths = std::int64_t(pixels) * image.samplesPerPixel * (settings.spectral ? 1 : kBands);
   image.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

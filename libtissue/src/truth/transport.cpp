@@ -159,8 +159,10 @@ Rgb Transport::trace(V o, V d, RandomStream& rng, PathStats& stats, PathScratch&
   std::uint32_t boundaryTriangle = 0;
   DepthCache cache;
   cache.queries = &stats.depthQueries;
-  Segment segment;
-  double segmentLeft = 0.0;  // mm of the current segment ahead of o (0: make a new one)
+  // MIS of the next collision's next events (transport.h): `armed` where the last real
+  // collision set scratch.nextWeight for the next one, reached by one flight.
+  const bool nextEventMis = m_settings.nextEventMis && !single && !m_lights.empty();
+  bool armed = false;
   for (int events = 0;; ++events) {
     if (events >= m_settings.maxInteractions) {
       ++stats.capped;
@@ -207,53 +209,50 @@ Rgb Transport::trace(V o, V d, RandomStream& rng, PathStats& stats, PathScratch&
       toBoundary = hitDistance(*hit, o, d);
       boundaryTriangle = hit->triangle;
       needRay = false;
-      segmentLeft = 0.0;
     }
-    if (segmentLeft <= 0.0) {
-      segment = segmentAt(o, toBoundary, cache);
-      segmentLeft = segment.lengthMm;
+    int layerIndex = -1;
+    const Flight flight = flyToCollision(o, d, toBoundary, w, ratio, rng, cache, events, layerIndex);
+    if (flight == Flight::Capped) {
+      ++stats.capped;
+      break;
     }
-    const double majorant = segment.majorant;
-    const double flight = majorant > 0.0 ? -std::log(rng.uniform()) / majorant : kInf;
-    if (flight >= segmentLeft && segmentLeft < toBoundary) {
-      // The segment ends first: the free path restarts there against the next segment's
-      // majorant (the exponential is memoryless).
-      o += segmentLeft * d;
-      toBoundary -= segmentLeft;
-      segmentLeft = 0.0;
-      continue;
-    }
-    if (flight < toBoundary) {
-      // Spectral tracking (Kutz et al. 2017, §5.2, history-aware): real with the probability
-      // of the weighted mean sigma_t, each band reweighted by its own over the one drawn with.
-      o += flight * d;
-      toBoundary -= flight;
-      segmentLeft -= flight;
-      const int layerIndex = segment.layer >= 0 ? segment.layer : layerAt(o, cache);
-      const LayerBands& layer = m_layers[static_cast<std::size_t>(layerIndex)];
-      const Rgb carried = withDirections(w, ratio);
-      const double sumW = carried[0] + carried[1] + carried[2];
-      if (!(sumW > 0.0)) break;
-      const double pReal =
-          (carried[0] * layer.sigmaT[0] + carried[1] * layer.sigmaT[1] + carried[2] * layer.sigmaT[2]) /
-          (majorant * sumW);
-      if (rng.uniform() > pReal) {  // null collision
-        for (std::size_t b = 0; b < 3; ++b)
-          w[b] *= (1.0 - layer.sigmaT[b] / majorant) / (1.0 - pReal);
-        continue;
-      }
+    if (flight == Flight::Vanished) break;
+    if (flight == Flight::Collision) {
       ++stats.interactions;
-      // The real collision's probability ratio times the albedo (collision estimator).
-      for (std::size_t b = 0; b < 3; ++b)
-        w[b] *= layer.sigmaS[b] / (majorant * pReal);
-      const Rgb nee = nextEvent(o, d, layer, withDirections(w, ratio), rng, cache, scratch, stats);
+      const LayerBands& layer = m_layers[static_cast<std::size_t>(layerIndex)];
+      // This collision's next events, each light's weighted by the balance heuristic of the lobe
+      // armed at the previous collision (1 where none was: after a boundary event, or none found).
+      std::span<const double> weights;
+      if (armed) weights = scratch.nextWeight;
+      std::fill(scratch.beamValid.begin(), scratch.beamValid.end(), std::uint8_t(0));
+      const Rgb nee =
+          nextEvent(o, d, layer, withDirections(w, ratio), weights, -1, rng, cache, scratch, stats);
       for (std::size_t b = 0; b < 3; ++b)
         radiance[b] += nee[b];
       if (single || allZero(w)) break;
+      const V dIn = d;
       d = scatter(d, layer, hero, ratio, rng);
       if (oneBand) ratio = {1.0, 1.0, 1.0};
       needRay = true;
-      segmentLeft = 0.0;
+      // The next collision's next events by MIS (transport.h): one extra flight per light whose
+      // beam this collision found, and the weights the continuing path's next event will carry.
+      armed = false;
+      if (nextEventMis && layer.grey) {
+        const double g = layer.g[0];
+        const double pContinue = optics::henyeyGreenstein(glm::dot(dIn, d), g);
+        const Rgb carried = withDirections(w, ratio);
+        for (std::size_t li = 0; li < m_lights.size(); ++li) {
+          scratch.nextWeight[li] = 1.0;
+          if (!scratch.beamValid[li]) continue;
+          const V lobe = -scratch.beam[li];
+          const double qContinue = optics::henyeyGreenstein(glm::dot(lobe, d), g);
+          scratch.nextWeight[li] = pContinue / (pContinue + qContinue);
+          const Rgb extra = guidedNextEvent(o, dIn, g, lobe, li, carried, rng, cache, scratch, stats);
+          for (std::size_t b = 0; b < 3; ++b)
+            radiance[b] += extra[b];
+          armed = true;
+        }
+      }
       // Russian roulette on the largest band's weight: survive with probability w / threshold.
       const double wMax = maxOf(withDirections(w, ratio));
       if (wMax < m_settings.rouletteWeight) {
@@ -264,6 +263,7 @@ Rgb Transport::trace(V o, V d, RandomStream& rng, PathStats& stats, PathScratch&
       }
       continue;
     }
+    armed = false;  // the next collision is not reached by a flight from this one
     // The boundary, from inside: Fresnel reflection (total internal reflection) or exit.
     const V q = o + toBoundary * d;
     const V n = m_faceNormal[boundaryTriangle];
@@ -287,6 +287,88 @@ Rgb Transport::trace(V o, V d, RandomStream& rng, PathStats& stats, PathScratch&
     inside = false;
   }
   return radiance;
+}
+
+// Tracks from o along d (inside) to the first real collision before the boundary, toBoundary mm
+// ahead: spectral tracking (Kutz et al. 2017, §5.2, history-aware: real with the probability of
+// the weighted mean sigma_t, each band reweighted by its own over the one drawn with) against the
+// local majorants, restarting at each segment's end (the exponential is memoryless). At a real
+// collision o is there, w carries the collision estimator's albedo weighting and layerIndex is
+// its layer; at the boundary o + toBoundary d is the boundary point. Each step counts an event.
+Transport::Flight Transport::flyToCollision(V& o, const V& d, double& toBoundary, Rgb& w, const Rgb& ratio,
+                                            RandomStream& rng, DepthCache& cache, int& events,
+                                            int& layerIndex) const {
+  Segment segment;
+  double segmentLeft = 0.0;  // mm of the current segment ahead of o (0: make a new one)
+  for (;; ++events) {
+    if (events >= m_settings.maxInteractions) return Flight::Capped;
+    if (segmentLeft <= 0.0) {
+      segment = segmentAt(o, toBoundary, cache);
+      segmentLeft = segment.lengthMm;
+    }
+    const double majorant = segment.majorant;
+    const double flight = majorant > 0.0 ? -std::log(rng.uniform()) / majorant : kInf;
+    if (flight >= segmentLeft && segmentLeft < toBoundary) {
+      o += segmentLeft * d;
+      toBoundary -= segmentLeft;
+      segmentLeft = 0.0;
+      continue;
+    }
+    if (flight >= toBoundary) return Flight::Boundary;
+    o += flight * d;
+    toBoundary -= flight;
+    segmentLeft -= flight;
+    layerIndex = segment.layer >= 0 ? segment.layer : layerAt(o, cache);
+    const LayerBands& layer = m_layers[static_cast<std::size_t>(layerIndex)];
+    const Rgb carried = withDirections(w, ratio);
+    const double sumW = carried[0] + carried[1] + carried[2];
+    if (!(sumW > 0.0)) return Flight::Vanished;
+    const double pReal =
+        (carried[0] * layer.sigmaT[0] + carried[1] * layer.sigmaT[1] + carried[2] * layer.sigmaT[2]) /
+        (majorant * sumW);
+    if (rng.uniform() > pReal) {  // null collision
+      for (std::size_t b = 0; b < 3; ++b)
+        w[b] *= (1.0 - layer.sigmaT[b] / majorant) / (1.0 - pReal);
+      continue;
+    }
+    for (std::size_t b = 0; b < 3; ++b)
+      w[b] *= layer.sigmaS[b] / (majorant * pReal);
+    return Flight::Collision;
+  }
+}
+
+// The second strategy of the next collision's next event for one light (transport.h): from the
+// collision x that the path left along a direction drawn from HG(g) around dIn, a flight along a
+// direction drawn from HG(g) around `lobe` (the light's beam reversed) to its first real
+// collision, whose next event of that light carries p / q times the balance heuristic q / (p + q),
+// i.e. p / (p + q). Nothing where it meets the boundary first (those paths belong to the
+// continuing path alone).
+Rgb Transport::guidedNextEvent(const V& x, const V& dIn, double g, const V& lobe, std::size_t light,
+                               const Rgb& w, RandomStream& rng, DepthCache& cache, PathScratch& scratch,
+                               PathStats& stats) const {
+  const double cosTheta = optics::sampleHenyeyGreenstein(g, rng.uniform());
+  double cosPhi = 0.0, sinPhi = 0.0;
+  rng.azimuth(cosPhi, sinPhi);
+  const V d = scatterDirection(lobe, cosTheta, cosPhi, sinPhi);
+  ++stats.guidedEvents;
+  const auto hit = m_rays.intersect(arr(x), arr(d), 0.0, kInf);
+  if (!hit) return {0.0, 0.0, 0.0};
+  V o = x;
+  double toBoundary = hitDistance(*hit, x, d);
+  Rgb weight = w;
+  int events = 0, layerIndex = -1;
+  if (flyToCollision(o, d, toBoundary, weight, {1.0, 1.0, 1.0}, rng, cache, events, layerIndex) !=
+      Flight::Collision)
+    return {0.0, 0.0, 0.0};
+  const double p = optics::henyeyGreenstein(glm::dot(dIn, d), g);
+  const double q = optics::henyeyGreenstein(glm::dot(lobe, d), g);
+  std::vector<double>& weights = scratch.nextWeight;
+  const double kept = weights[light];
+  weights[light] = p / (p + q);
+  const Rgb nee = nextEvent(o, d, m_layers[static_cast<std::size_t>(layerIndex)], weight, weights, int(light),
+                            rng, cache, scratch, stats);
+  weights[light] = kept;
+  return nee;
 }
 
 // The hit's distance recomputed in double precision on the triangle's plane: Embree's single
@@ -492,7 +574,8 @@ double Transport::neeSurvival(const V& y, const Rgb& w, DepthCache& cache) const
 // (exact on flat faces). The first guess is the face this light connected through at the path's
 // previous collision (or normal incidence): nearby collisions connect through the same face, so
 // one ray usually confirms it.
-Rgb Transport::nextEvent(const V& y, const V& d, const LayerBands& layer, const Rgb& w, RandomStream& rng,
+Rgb Transport::nextEvent(const V& y, const V& d, const LayerBands& layer, const Rgb& w,
+                         std::span<const double> lightWeights, int onlyLight, RandomStream& rng,
                          DepthCache& cache, PathScratch& scratch, PathStats& stats) const {
   Rgb sum{0.0, 0.0, 0.0};
   const double survive = neeSurvival(y, w, cache);
@@ -503,6 +586,7 @@ Rgb Transport::nextEvent(const V& y, const V& d, const LayerBands& layer, const 
   ++stats.nextEvents;
   const double eta = m_nAmbient / m_nTissue;
   for (std::size_t li = 0; li < m_lights.size(); ++li) {
+    if (onlyLight >= 0 && li != std::size_t(onlyLight)) continue;
     const PreparedLight& light = m_lights[li];
     V toLight = light.directional ? light.toLight : glm::normalize(light.position - y);
     V n = scratch.lightNormalValid[li] ? scratch.lightNormal[li] : toLight;
@@ -535,6 +619,8 @@ Rgb Transport::nextEvent(const V& y, const V& d, const LayerBands& layer, const 
     if (!found || glm::dot(-travel, n) <= 0.0) continue;
     scratch.lightNormal[li] = n;
     scratch.lightNormalValid[li] = 1;
+    scratch.beam[li] = travel;
+    scratch.beamValid[li] = 1;
     const double transmitted = 1.0 - optics::fresnelReflectance(m_nAmbient, m_nTissue, cosI).reflectance;
     const Rgb tr = transmittance(y, -travel, length, rng, cache);
     if (allZero(tr)) continue;
@@ -542,7 +628,8 @@ Rgb Transport::nextEvent(const V& y, const V& d, const LayerBands& layer, const 
         occluded(q + m_eps * n, toLight, light.directional ? kInf : glm::length(light.position - q)))
       continue;
     // Collimated irradiance inside: the flux T E cos(theta_i) per unit area over cos(theta_t).
-    const double inside = transmitted * cosI / cosT / survive;
+    const double misWeight = lightWeights.empty() ? 1.0 : lightWeights[li];
+    const double inside = transmitted * cosI / cosT / survive * misWeight;
     const double cosScatter = glm::dot(travel, -d);
     const double phase0 = optics::henyeyGreenstein(cosScatter, layer.g[0]);
     for (std::size_t b = 0; b < 3; ++b) {

@@ -21,6 +21,22 @@
 // layers the segment may meet; where those layers all have the same coefficients (the
 // parenchyma above and below the liver's vessels) the segment needs no further query and its
 // transmittance is exact. Free paths restart at each segment's end (memoryless): unbiased.
+//
+// The next collision's next event by multiple importance sampling (Veach 1997, §9.2, the balance
+// heuristic with one sample per strategy). Next-event estimation evaluates the phase function
+// between the path's direction and the light's refracted beam; with g = 0.9 that is up to ~190x
+// its mean inside a cone of ~0.1 rad, so the rare paths that head up the beam near the surface
+// carry most of a pixel's light, and the estimator's variance is dominated by them (heavy-tailed:
+// the per-sample variance measured at 4, 32 spp grows 3 -> 14; with g = 0 at the same reduced
+// scattering it is 1.4). At each real collision x whose next event found light l, the integral of
+// l's next event at the *next* collision over the new direction is estimated by two strategies:
+// the continuing path (direction from the phase function p) and one extra flight whose direction
+// is drawn from a Henyey-Greenstein lobe q_l of the same g around the beam's reverse, -t_l. Each
+// is weighted by its balance heuristic, p / (p + q_l) and q_l / (p + q_l); the product p q_l /
+// (p + q_l) that reaches the pixel is at most min(p, q_l), so the peak is sampled where it lies.
+// Only flights that reach the next collision without meeting the boundary take part (the extra
+// flight scores nothing at the boundary; the path's next event after a boundary event keeps
+// weight 1), and only where x's layer has one g for every band (the hero lobes then agree).
 
 #include <array>
 #include <cstdint>
@@ -44,6 +60,7 @@ struct PathStats {
   std::int64_t nextEvents = 0;     ///< light connections traced
   std::int64_t skippedEvents = 0;  ///< light connections ended by their Russian roulette
   std::int64_t depthQueries = 0;   ///< nearest-surface queries (layer depths)
+  std::int64_t guidedEvents = 0;   ///< extra flights of the next collision's next-event MIS
 };
 
 /// Per-thread, per-pixel scratch: the last connection normal per light (the next collision's
@@ -52,9 +69,18 @@ struct PathStats {
 struct PathScratch {
   std::vector<glm::dvec3> lightNormal;
   std::vector<std::uint8_t> lightNormalValid;
+  // The last next event's refracted beam direction per light (valid where it found the light),
+  // and the balance-heuristic weight of each light's next event at the path's next collision
+  // (1 where no lobe was armed; Transport::trace).
+  std::vector<glm::dvec3> beam;
+  std::vector<std::uint8_t> beamValid;
+  std::vector<double> nextWeight;
   void reset(std::size_t lights) {
     lightNormal.assign(lights, glm::dvec3(0.0));
     lightNormalValid.assign(lights, 0);
+    beam.assign(lights, glm::dvec3(0.0));
+    beamValid.assign(lights, 0);
+    nextWeight.assign(lights, 1.0);
   }
 };
 
@@ -100,6 +126,15 @@ class Transport {
     int layer = -1;
   };
 
+  // How a flight inside the tissue ended (flyToCollision).
+  enum class Flight { Collision, Boundary, Vanished, Capped };
+
+  Flight flyToCollision(glm::dvec3& o, const glm::dvec3& d, double& toBoundary, Rgb& w, const Rgb& ratio,
+                        optics::detail::RandomStream& rng, DepthCache& cache, int& events,
+                        int& layerIndex) const;
+  Rgb guidedNextEvent(const glm::dvec3& x, const glm::dvec3& dIn, double g, const glm::dvec3& lobe,
+                      std::size_t light, const Rgb& w, optics::detail::RandomStream& rng, DepthCache& cache,
+                      PathScratch& scratch, PathStats& stats) const;
   double hitDistance(const MeshHit& hit, const glm::dvec3& o, const glm::dvec3& d) const;
   void refreshDepth(const glm::dvec3& p, DepthCache& cache) const;
   int layerAt(const glm::dvec3& p, DepthCache& cache) const;
@@ -113,8 +148,8 @@ class Transport {
   bool occluded(const glm::dvec3& from, const glm::dvec3& dir, double maxT) const;
   double neeSurvival(const glm::dvec3& y, const Rgb& w, DepthCache& cache) const;
   Rgb nextEvent(const glm::dvec3& y, const glm::dvec3& d, const LayerBands& layer, const Rgb& w,
-                optics::detail::RandomStream& rng, DepthCache& cache, PathScratch& scratch,
-                PathStats& stats) const;
+                std::span<const double> lightWeights, int onlyLight, optics::detail::RandomStream& rng,
+                DepthCache& cache, PathScratch& scratch, PathStats& stats) const;
   glm::dvec3 scatter(const glm::dvec3& d, const LayerBands& layer, std::size_t hero, Rgb& ratio,
                      optics::detail::RandomStream& rng) const;
   Rgb glossy(const glm::dvec3& p, const glm::dvec3& toEye, const glm::dvec3& n) const;

@@ -121,6 +121,12 @@ struct PathTraceSettings {
   /// whose depth range can only meet some layers; false: one majorant over every layer and band
   /// (the same estimator, more null collisions and depth queries). Both are unbiased.
   bool localMajorants = true;
+  /// true: the next collision's next event of each light is estimated by two strategies combined
+  /// by the balance heuristic, the continuing path and an extra flight drawn towards the light's
+  /// refracted beam (Veach 1997, §9.2; docs/DECISIONS.md, "The truth samples the beam's phase
+  /// peak"): far lower variance where the phase function is forward-peaked; false: the path's own
+  /// next events alone. Both are unbiased.
+  bool nextEventMis = true;
   /// After each pass; return false to stop early (the image then holds the passes done). Empty:
   /// no reports. The library never writes to stderr itself.
   std::function<bool(const PathTraceProgress&)> onPass;
@@ -142,6 +148,7 @@ struct TruthImage {
   std::int64_t nextEvents = 0;                 ///< light connections traced at real collisions
   std::int64_t skippedNextEvents = 0;          ///< light connections ended by their Russian roulette
   std::int64_t depthQueries = 0;               ///< nearest-surface queries for the layer depths
+  std::int64_t guidedNextEvents = 0;           ///< extra flights of the next-event MIS (nextEventMis)
   double seconds = 0.0;                        ///< wall-clock time, s
   int threads = 1;                             ///< worker threads used
   Intersector intersector = Intersector::Bvh;  ///< the back end that answered
