@@ -60,8 +60,9 @@ void registerAtlasCommand(CLI::App& app, const GlobalOptions& global, int& exitC
   cmd->add_option("--width", o->config.width, "image width, pixels (default 160; quick 96)");
   cmd->add_option("--height", o->config.height, "image height, pixels (default 120; quick 72)");
   cmd->add_option("--spp", o->config.truthSpp, "truth samples per pixel at most (default 256; quick 64)");
-  cmd->add_option("--truth-seconds", o->config.truthSeconds, "truth time per frame at most, s (default 120)");
-  cmd->add_option("--frames", o->config.frames, "timed frames per setting (default 3)");
+  cmd->add_option("--truth-seconds", o->config.truthSeconds,
+                  "truth time per frame at most, s (default 120; quick at most 5)");
+  cmd->add_option("--frames", o->config.frames, "timed frames per setting (default 3; quick at most 2)");
   cmd->add_option("--cache", o->cache, "folder of cached truth images (default <out>/truth_cache)");
   cmd->callback([o, &global, &exitCode] { exitCode = run(*o, global); });
 }
