@@ -362,13 +362,10 @@ Rgb Transport::guidedNextEvent(const V& x, const V& dIn, double g, const V& lobe
     return {0.0, 0.0, 0.0};
   const double p = optics::henyeyGreenstein(glm::dot(dIn, d), g);
   const double q = optics::henyeyGreenstein(glm::dot(lobe, d), g);
-  std::vector<double>& weights = scratch.nextWeight;
-  const double kept = weights[light];
-  weights[light] = p / (p + q);
-  const Rgb nee = nextEvent(o, d, m_layers[static_cast<std::size_t>(layerIndex)], weight, weights, int(light),
-                            rng, cache, scratch, stats);
-  weights[light] = kept;
-  return nee;
+  const Rgb nee = nextEvent(o, d, m_layers[static_cast<std::size_t>(layerIndex)], weight, {}, int(light), rng,
+                            cache, scratch, stats);
+  const double mis = p / (p + q);
+  return {nee[0] * mis, nee[1] * mis, nee[2] * mis};
 }
 
 // The hit's distance recomputed in double precision on the triangle's plane: Embree's single
