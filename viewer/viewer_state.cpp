@@ -10,7 +10,8 @@ namespace {
 
 /// The organ and the instrument as the scene's objects (after attach).
 void placeObjects(Viewer& v) {
-  v.scene.objects = {scene::organObject(v.loop->meshHandle(), v.textures, render::LitSettings{})};
+  v.scene.objects = {scene::organObject(v.loop->meshHandle(), v.textures, render::LitSettings{},
+                                        scene::surfaceMaterialOf(v.organ))};
   if (auto tool = v.loop->instrumentObject()) v.scene.objects.push_back(*tool);
 }
 

@@ -9,6 +9,7 @@ uniform vec3 u_lightRadiance[MAX_LIGHTS];     // linear RGB, colour * intensity
 uniform int u_lightShadowLayer[MAX_LIGHTS];   // layer of u_shadowMaps, -1 = no shadow
 uniform mat4 u_lightShadowMatrix[MAX_LIGHTS]; // world (mm) to the shadow map's clip space
 uniform float u_lightBiasMm[MAX_LIGHTS];      // mm, normal offset before the lookup
+uniform vec2 u_lightTexelMm[MAX_LIGHTS];      // a map texel's width, mm = x + y * light distance mm
 uniform sampler2DArray u_shadowMaps;          // R32F light distances, mm
 
 // Unit vector from P toward light i.
@@ -24,11 +25,16 @@ vec3 shadowCoordinates(int i, vec3 P) {
 }
 
 // Fraction of light i reaching P (1 = lit), 3x3 PCF. The point is pushed out along N by the
-// bias (normal-offset shadows) so a surface does not shadow itself.
+// bias plus two texels of the map at P (normal-offset shadows, Holbert 2011), and the depths
+// compared with the same margin: a texel covers a patch of surface whose depth spans about its
+// width at 45 degrees, and the 3x3 kernel reaches one texel further, so a bias fixed in mm would
+// shadow the surface that the map stores wherever a texel is wider than the bias.
 float shadowFactor(int i, vec3 P, vec3 N) {
   int layer = u_lightShadowLayer[i];
   if (layer < 0) return 1.0;
-  vec3 Pb = P + N * u_lightBiasMm[i];
+  vec2 t = u_lightTexelMm[i];
+  float bias = u_lightBiasMm[i] + 2.0 * (t.x + t.y * lightDistance(u_lightVector[i], P));
+  vec3 Pb = P + N * bias;
   vec3 c = shadowCoordinates(i, Pb);
   if (c.z <= 0.0 || any(lessThan(c.xy, vec2(0.0))) || any(greaterThan(c.xy, vec2(1.0)))) return 1.0;
   float d = lightDistance(u_lightVector[i], Pb);
@@ -36,7 +42,7 @@ float shadowFactor(int i, vec3 P, vec3 N) {
   float lit = 0.0;
   for (int y = -1; y <= 1; ++y)
     for (int x = -1; x <= 1; ++x)
-      lit += d <= texture(u_shadowMaps, vec3(c.xy + vec2(x, y) * texel, float(layer))).r + u_lightBiasMm[i] ? 1.0 : 0.0;
+      lit += d <= texture(u_shadowMaps, vec3(c.xy + vec2(x, y) * texel, float(layer))).r + bias ? 1.0 : 0.0;
   return lit / 9.0;
 }
 

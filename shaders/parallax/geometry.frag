@@ -83,7 +83,7 @@ void main() {
     vec3 L = lightDirection(i, P);
     float shadow = shadowFactor(i, P, Ng);
     outerIrradiance += u_lightRadiance[i] * max(dot(N, L), 0.0) * shadow;
-    specular += blinnPhongSpecular(N, L, V, u_specular, u_shininess) * u_lightRadiance[i] * shadow;
+    specular += surfaceSpecular(N, L, V, u_specular, u_shininess) * u_lightRadiance[i] * shadow;
   }
 
   // Inner layers, deepest first, composited front over back by their opacities.

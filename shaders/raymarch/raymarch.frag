@@ -6,7 +6,7 @@
 // With a boundary (u_ior > 1) the pixel is composed as François et al. 2006 §3 add a specular
 // (glossy) and a diffuse reflection to the single scattering, and as Norberg 2010 §2.2.2 light
 // "scatters directly towards the viewer" (a specular term) or "into the material":
-//   L = F_s(V.H) lobe (N.L) E                                  outer surface, Fresnel-weighted
+//   L = f_r (N.L) E                                            outer surface (common/specular.glsl)
 //     + T(N.V) [ pi u_radianceScale' L_ss(T(N.L) per light)    single scattering (eq. 1-5)
 //              + sum_l R_ms T(N.L)/T0 (N.L) E_l/pi / T0 ]      multiple scattering
 // with T(mu) = 1 - F(mu) the Schlick transmittance and T0 = T(1): the dipole's R_ms is per
@@ -17,6 +17,7 @@
 
 #include "common/surface.glsl"
 #include "raymarch/march.glsl"
+#include "common/specular.glsl"
 
 uniform int u_samples;          // fixed sample count (no TISSUE_ADAPTIVE)
 uniform bool u_jitter;          // noisy sampling (Norberg §3.1.2) from a per-pixel hash
@@ -83,12 +84,8 @@ void main() {
     float NdotL = max(dot(N, L), 0.0);
     weight[l] = 1.0 - schlickFresnel(NdotL, F0);
     irradianceIn += weight[l] / T0 * NdotL * u_lightRadiance[l];
-    if (u_specularOn && NdotL > 0.0) {
-      // Blinn-Phong's normalised lobe (common/blinn_phong.glsl) weighted by Fresnel at V.H.
-      vec3 H = normalize(L + f.wo);
-      float lobe = (u_shininess + 8.0) / (8.0 * kPi) * pow(max(dot(N, H), 0.0), u_shininess);
-      specular += schlickFresnel(dot(H, f.wo), F0) * lobe * NdotL * kPi * u_lightRadiance[l];
-    }
+    // The outer surface's microfacet reflection, every method's (common/specular.glsl).
+    if (u_specularOn) specular += surfaceSpecular(N, L, f.wo, F0, u_shininess) * u_lightRadiance[l];
   }
   vec4 result = marchSingleScattering(f, max(n, 1), jitter, weight);
 #ifdef TISSUE_SHOW_SAMPLES

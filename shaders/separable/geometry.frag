@@ -24,7 +24,7 @@ void main() {
     vec3 L = lightDirection(i, v_worldPosition);
     vec3 E = u_lightRadiance[i] * shadowFactor(i, v_worldPosition, Ng);
     diffuse += lambertDiffuse(N, L, albedo) * E;
-    specular += blinnPhongSpecular(N, L, V, u_specular, u_shininess) * E;
+    specular += surfaceSpecular(N, L, V, u_specular, u_shininess) * E;
     diffuse += transmittedLight(i, v_worldPosition, Ng, L) * albedo;
   }
   o_radiance = vec4(specular, 1.0);

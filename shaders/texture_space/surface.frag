@@ -24,7 +24,7 @@ void main() {
   vec3 specular = vec3(0.0);
   for (int i = 0; i < u_lightCount; ++i) {
     vec3 L = lightDirection(i, v_worldPosition);
-    specular += blinnPhongSpecular(N, L, V, u_specular, u_shininess) * u_lightRadiance[i] *
+    specular += surfaceSpecular(N, L, V, u_specular, u_shininess) * u_lightRadiance[i] *
                 shadowFactor(i, v_worldPosition, Ng);
   }
   o_radiance = vec4(specular, 1.0);

@@ -1,6 +1,7 @@
 // Shader library: embedded sources, override folder, #define injection, includes, errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 
 #include "gl_test_support.h"
@@ -45,7 +46,9 @@ TEST(ShaderLibraryTest, InjectsDefinesRightAfterVersionAndResolvesIncludes) {
   EXPECT_EQ(s.find("#include"), std::string::npos);
   EXPECT_NE(s.find("vec3 perturbNormal("), std::string::npos);
   EXPECT_NE(s.find("vec3 tonemapReinhard("), std::string::npos);
-  ASSERT_EQ(shader->files.size(), 7u);
+  ASSERT_EQ(shader->files.size(), 8u);  // lit.frag and 7 included, each once
+  EXPECT_NE(std::find(shader->files.begin(), shader->files.end(), "common/specular.glsl"),
+            shader->files.end());
   EXPECT_EQ(shader->files[0], "lit/lit.frag");
   EXPECT_EQ(shader->files[1], "common/surface.glsl");
   EXPECT_EQ(shader->files[2], "common/normal_mapping.glsl");

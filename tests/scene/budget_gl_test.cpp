@@ -3,6 +3,10 @@
 // the wrap term lights past the terminator. Needs GL (the scene's own headless context).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
 #include "tissue/scene/scene.h"
 
 namespace tissue::scene {
@@ -88,6 +92,9 @@ TEST(SceneBudget, WrapLightsPastTheTerminator) {
   OrganDesc d;
   d.mesh = kData / "meshes" / "liver.obj";
   d.material = kData / "materials" / "liver.json";
+  // A liver 1/50 of its size (about 4 mm): light diffuses across a good part of it, so its
+  // optical wrap (opticalWrap) is clamped at Green's half wrap, large enough to see in the mean.
+  d.meshScaleToMm = 0.02f;
   ASSERT_TRUE(scene->addOrgan(d).ok());  // lit, no wrap
   auto plain = scene->renderImage(160, 120);
   ASSERT_TRUE(plain.ok()) << plain.error().message;
@@ -98,6 +105,44 @@ TEST(SceneBudget, WrapLightsPastTheTerminator) {
   EXPECT_EQ(scene->budgetChoices()[0].setting, "wrap");
   // (N.L + w) / (1 + w) >= N.L: brighter where the light grazes, never darker.
   EXPECT_GT(meanLevel(*wrapped), meanLevel(*plain) + 0.2);
+}
+
+// SceneSettings::normalMaps off (the atlas and the budget bench: the truth has no normal map):
+// the organ is drawn off the mesh's own shape and its lit method needs no tangent frames.
+TEST(SceneNormalMaps, OffDrawsTheMeshShapeAndDropsTheTangents) {
+  std::optional<Image8> images[2];
+  for (bool maps : {true, false}) {
+    SceneSettings settings;
+    settings.materials.textureRoots = {TISSUE_TEST_GENERATED_DATA_DIR, TISSUE_TEST_DATA_DIR};
+    settings.quality.minFootprintPx = 1e12;  // lit (wrap), whose tangents follow the normal map
+    settings.normalMaps = maps;
+    auto scene = Scene::create({}, settings);
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    OrganDesc d;
+    d.mesh = kData / "meshes" / "liver.obj";
+    d.material = kData / "materials" / "liver.json";  // has a normal map
+    ASSERT_TRUE(scene->addOrgan(d).ok());
+    ASSERT_TRUE(scene->setBudgetMs(1e4).ok());
+    auto image = scene->renderImage(160, 120);
+    ASSERT_TRUE(image.ok()) << image.error().message;
+    ASSERT_EQ(scene->budgetChoices().size(), 1u);
+    EXPECT_EQ(scene->budgetChoices()[0].mesh.tangents, maps);
+    images[maps ? 0 : 1] = std::move(*image);
+  }
+  ASSERT_EQ(images[0]->pixels.size(), images[1]->pixels.size());
+  // The map's bumps move the shading of a good part of the organ's pixels.
+  int organ = 0, moved = 0;
+  for (std::size_t i = 0; i + 3 < images[0]->pixels.size(); i += 4) {
+    bool differs = false, covered = false;
+    for (std::size_t c = 0; c < 3; ++c) {
+      differs = differs || images[0]->pixels[i + c] != images[1]->pixels[i + c];
+      covered = covered || images[1]->pixels[i + c] != images[1]->pixels[c];  // not the corner's background
+    }
+    organ += covered ? 1 : 0;
+    moved += differs ? 1 : 0;
+  }
+  std::printf("normal maps: %d of %d organ pixels change\n", moved, organ);
+  EXPECT_GT(moved, organ / 4);
 }
 
 }  // namespace

@@ -2,7 +2,10 @@
 // distance and view angle, and the atlas's setting names as method choices.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "tissue/scene/budget.h"
+#include "tissue/scene/organ_methods.h"
 
 namespace tissue::scene {
 namespace {
@@ -70,6 +73,36 @@ TEST(BudgetView, AtlasSettingNamesBecomeMethodChoices) {
   EXPECT_EQ(c->samples, 25);
   o.setting = "many";
   ASSERT_FALSE(choicesOfSetting(o, {}));
+}
+
+// A closed cube of side `a` mm: area 6 a^2.
+OrganAssets cubeOrgan(float a, MaterialLayer layer) {
+  OrganAssets o;
+  o.material = defaultMaterial();
+  o.material.layers = {layer};
+  const float h = 0.5f * a;
+  for (int i = 0; i < 8; ++i)
+    o.mesh.positions.push_back({i & 1 ? h : -h, i & 2 ? h : -h, i & 4 ? h : -h});
+  o.mesh.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                      {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  return o;
+}
+
+TEST(OpticalWrap, IsTheDiffusionLengthOverTheCurvatureRadius) {
+  // sigma_tr = sqrt(3 sigma_a (sigma_a + sigma_s (1 - g))) of the band that travels furthest
+  // (Jensen et al. 2001), over R = sqrt(area / 4 pi).
+  MaterialLayer l;
+  l.sigmaS = {8.0f, 9.0f, 10.0f};
+  l.sigmaT = {8.1f, 13.0f, 14.0f};
+  l.g = 0.9f;
+  const double sa = 0.1, sr = 0.8, tr = std::sqrt(3.0 * sa * (sa + sr));  // the red band's
+  for (float a : {100.0f, 200.0f}) {
+    const double radius = std::sqrt(6.0 * double(a) * double(a) / (4.0 * 3.14159265358979));
+    EXPECT_NEAR(double(opticalWrap(cubeOrgan(a, l))), 1.0 / (tr * radius), 0.02 / (tr * radius))
+        << a << " mm";
+  }
+  EXPECT_NEAR(double(opticalWrap(cubeOrgan(100.0f, l)) / opticalWrap(cubeOrgan(200.0f, l))), 2.0, 1e-3);
+  EXPECT_EQ(opticalWrap(cubeOrgan(0.5f, l)), 0.5f);  // a tiny organ: clamped to Green's half wrap
 }
 
 }  // namespace

@@ -86,11 +86,12 @@ TEST(AtlasSettings, LitWithTheWrapTermHasItsOwnRow) {
       if (s.method != render::ShadingMethod::Lit) continue;
       if (s.name == quality::kWrapSetting) {
         ++wraps;
-        EXPECT_EQ(s.choices.litWrap, scene::kFallbackWrap);
+        EXPECT_TRUE(s.choices.litWrapFromOptics);
       } else {
         ++plain;
         EXPECT_EQ(s.name, "default");
         EXPECT_EQ(s.choices.litWrap, 0.0f);
+        EXPECT_FALSE(s.choices.litWrapFromOptics);
       }
     }
     EXPECT_EQ(wraps, 1) << (quick ? "quick" : "full");

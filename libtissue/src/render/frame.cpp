@@ -127,7 +127,7 @@ Result<void> Renderer::Impl::renderFrame(const Scene& scene, int width, int heig
   if (!resolved) return resolved.error();
   const glm::vec3 centre = 0.5f * (resolved->lo + resolved->hi);
   const float radius = std::max(0.5f * glm::length(resolved->hi - resolved->lo), 1e-3f);
-  auto lights = makeLightFrame(scene.lights, centre, radius);
+  auto lights = makeLightFrame(scene.lights, centre, radius, settings.shadowMapSize);
   if (!lights) return lights.error();
   if (auto r = targets.ensure(g, width, height, settings.samples); !r) return r;
   const Camera& c = scene.camera;

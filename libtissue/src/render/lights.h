@@ -21,11 +21,18 @@ struct LightFrame {
   std::array<int, kMaxLights> shadowLayer{};         ///< layer of the shadow-map array, -1 = none
   std::array<glm::mat4, kMaxLights> shadowMatrix{};  ///< world (mm) to the shadow map's clip space
   std::array<float, kMaxLights> biasMm{};            ///< mm, normal offset before the lookup
+  /// One shadow-map texel's width at a point, mm = x + y * (the point's light distance, mm): a
+  /// directional light's orthographic texel (x), a point light's perspective one (y). The
+  /// shaders widen the bias by it, so a map stretched over a large scene does not shadow the
+  /// surfaces it stores (acne).
+  std::array<glm::vec2, kMaxLights> texelMm{};
 };
 
 /// Builds the frame's lights; the shadow frusta enclose the sphere (centre, radius mm) around
-/// every object. Fails on more than kMaxLights lights or a zero direction.
-Result<LightFrame> makeLightFrame(std::span<const Light> lights, glm::vec3 centre, float radiusMm);
+/// every object; each map is `shadowMapSize` texels square. Fails on more than kMaxLights lights or a zero
+/// direction.
+Result<LightFrame> makeLightFrame(std::span<const Light> lights, glm::vec3 centre, float radiusMm,
+                                  int shadowMapSize);
 
 /// Sets the lights.glsl uniforms of the program in use (`program`); the shadow-map array is
 /// on texture unit `shadowUnit`.

@@ -76,7 +76,7 @@ Result<MethodChoices> choicesOfSetting(const quality::QualityOption& option, con
       c.gaussians = std::stoi(s.substr(0, g));
       c.cull = c.clip = c.depthSize = s.substr(g + 2) == "opt";
     } else if (option.method == "lit") {
-      if (s == quality::kWrapSetting) c.litWrap = kFallbackWrap;
+      if (s == quality::kWrapSetting) c.litWrapFromOptics = true;
     } else if (option.method == "ray-march") {
       c.adaptive = s.rfind("adaptive", 0) == 0;
       const auto dash = s.rfind('-');

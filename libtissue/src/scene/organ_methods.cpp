@@ -69,7 +69,8 @@ Result<render::MethodSettings> organMethod(render::ShadingMethod method, const O
   using render::ShadingMethod;
   switch (method) {
     case ShadingMethod::Lit:
-      return render::MethodSettings{render::LitSettings{.wrap = choices.litWrap}};
+      return render::MethodSettings{
+          render::LitSettings{.wrap = choices.litWrapFromOptics ? opticalWrap(organ) : choices.litWrap}};
     case ShadingMethod::Separable: {
       // The first layer's dipole profile as a kernel (Freude eq. 5.10; pre-integrated by default,
       // eq. 5.17-5.18), with its transmittance table (Jimenez et al. 2010).
@@ -140,12 +141,33 @@ Result<reference::RadialProfile> separableTruth(const OrganAssets& organ, const 
   return std::move(separable->truth);
 }
 
+float opticalWrap(const OrganAssets& organ) {
+  if (organ.material.layers.empty()) return 0.0f;
+  const Float3 tr = layerReflectance(organ.material, 0).sigmaTr;
+  const double sigma = std::min({double(tr.x), double(tr.y), double(tr.z)});
+  double area = 0.0;
+  const auto& p = organ.mesh.positions;
+  for (const Triangle& t : organ.mesh.triangles)
+    area += 0.5 * double(length(cross(p[t[1]] - p[t[0]], p[t[2]] - p[t[0]])));
+  if (!(sigma > 0.0) || !(area > 0.0)) return 0.0f;
+  const double radiusMm = std::sqrt(area / (4.0 * 3.14159265358979));
+  return float(std::clamp(1.0 / (sigma * radiusMm), 0.0, 0.5));
+}
+
+render::Material surfaceMaterialOf(const OrganAssets& organ, Float3 ambient) {
+  render::Material m;
+  m.specular = specularF0(organ.material);
+  m.ambient = ambient;
+  return m;
+}
+
 render::SceneObject organObject(render::MeshHandle mesh, const OrganTextures& textures,
-                                render::MethodSettings method) {
+                                render::MethodSettings method, const render::Material& surface) {
   render::SceneObject o;
   o.mesh = mesh;
   o.baseColor = textures.baseColor;
   o.normalMap = textures.normalMap;
+  o.material = surface;
   o.method = std::move(method);
   return o;
 }

@@ -119,7 +119,7 @@ struct Scene::Impl {
       quality::ObjectView v = organView(o.assets.bounds, o.model, lastCamera, width, height);
       v.deforming = o.moved;
       v.importance = o.importance;
-      v.hasNormalMap = bool(o.textures.normalMap);
+      v.hasNormalMap = o.hasNormalMap;
       v.allowed = o.offered;
       views.push_back(std::move(v));
     }
@@ -240,7 +240,9 @@ struct Scene::Impl {
   void buildObjects() {
     scene.objects.clear();
     for (const Organ& o : organs) {
-      render::SceneObject object = organObject(o.loop ? o.loop->meshHandle() : o.mesh, o.textures, o.method);
+      render::SceneObject object = organObject(o.loop ? o.loop->meshHandle() : o.mesh, o.textures, o.method,
+                                               surfaceMaterialOf(o.assets, settings.ambient));
+      if (!o.hasNormalMap) object.normalMap = {};  // SceneSettings::normalMaps off
       object.model = o.model;
       object.doubleSided = o.openSurface;
       // The ray march's texture units per mm are world values (render::SceneObject::model).
@@ -324,7 +326,7 @@ Result<OrganId> Scene::addOrgan(const OrganDesc& desc) {
   organ.importance = std::max(0.0, desc.importance);
   // An open surface (a patch, a cut organ) must not vanish when seen from behind (issue 14).
   organ.openSurface = !(organ.loop ? organ.loop->surface() : *organ.still).boundaryVertices().empty();
-  organ.hasNormalMap = organ.assets.normalMap.has_value();
+  organ.hasNormalMap = organ.assets.normalMap.has_value() && s.settings.normalMaps;
   if (!s.renderer) {  // simulation only: the method is not built, its mesh work is kept
     s.syncMeshWork(organ, desc.method);
     s.organs.push_back(std::move(organ));

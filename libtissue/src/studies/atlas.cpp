@@ -33,7 +33,7 @@ std::vector<AtlasSetting> atlasSettings(bool quick) {
   out.push_back({ShadingMethod::Lit, "default", {}});
   // The quality controller's small-footprint fallback (Green 2004's wrap; Unreal Substrate's
   // Wrap tier), scored like every other setting so its table has the row's own errors.
-  out.push_back({ShadingMethod::Lit, std::string(quality::kWrapSetting), {.litWrap = scene::kFallbackWrap}});
+  out.push_back({ShadingMethod::Lit, std::string(quality::kWrapSetting), {.litWrapFromOptics = true}});
   const std::vector<std::string> kernels =
       quick ? std::vector<std::string>{"preintegrated", "jimenez"}
             : std::vector<std::string>{"svd", "preintegrated", "guided", "manual", "deon", "jimenez"};
@@ -162,19 +162,6 @@ double median(std::vector<double> v) {
   return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
-// The displayed linear radiance of the last frame: the composite's two terms.
-Image8 toneMapped(std::span<const Float3> linear, int width, int height) {
-  Image8 img(width, height, 4);
-  for (std::size_t i = 0; i < linear.size(); ++i) {
-    const Float3 c = toneMap(linear[i]);
-    img.pixels[4 * i + 0] = std::uint8_t(std::lround(255.0f * c.x));
-    img.pixels[4 * i + 1] = std::uint8_t(std::lround(255.0f * c.y));
-    img.pixels[4 * i + 2] = std::uint8_t(std::lround(255.0f * c.z));
-    img.pixels[4 * i + 3] = 255;
-  }
-  return img;
-}
-
 }  // namespace
 
 Result<AtlasResult> runAtlas(render::Renderer& renderer, const AtlasConfig& configIn) {
@@ -187,6 +174,7 @@ Result<AtlasResult> runAtlas(render::Renderer& renderer, const AtlasConfig& conf
     config.frames = std::min(config.frames, 2);
   }
   const int w = config.width, h = config.height;
+  const bool artists = config.artistTerms;
   // 1 the organ, its loop (the scenario's poke), its textures and the frames.
   auto loaded = scene::loadSimulatedOrgan(config.organ, config.scene);
   if (!loaded) return loaded.error();
@@ -291,7 +279,11 @@ Result<AtlasResult> runAtlas(render::Renderer& renderer, const AtlasConfig& conf
         skipped.push_back({method + " " + s.name + " (" + frame.name + ")", ms.error().message});
         continue;
       }
-      scene.objects = {scene::organObject(*mesh, *textures, *ms)};
+      // No ambient and no normal map (AtlasConfig::artistTerms): the truth is lit by the frame's
+      // lights alone and reflects off the mesh's own shape.
+      scene.objects = {scene::organObject(
+          *mesh, *textures, *ms, scene::surfaceMaterialOf(organ, artists ? config.scene.ambient : Float3{}))};
+      if (!artists || !config.scene.normalMaps) scene.objects[0].normalMap = {};
       std::vector<double> times;
       for (int f = 0; f <= config.frames; ++f) {
         const auto start = std::chrono::steady_clock::now();

@@ -32,6 +32,18 @@ Float3 toneMap(Float3 radiance, float exposure) {
   return {one(radiance.x), one(radiance.y), one(radiance.z)};
 }
 
+Image8 toneMapped(std::span<const Float3> linear, int width, int height, float exposure) {
+  Image8 img(width, height, 4);
+  for (std::size_t i = 0; i < linear.size() && i < std::size_t(width) * std::size_t(height); ++i) {
+    const Float3 c = toneMap(linear[i], exposure);
+    img.pixels[4 * i + 0] = std::uint8_t(std::lround(255.0f * c.x));
+    img.pixels[4 * i + 1] = std::uint8_t(std::lround(255.0f * c.y));
+    img.pixels[4 * i + 2] = std::uint8_t(std::lround(255.0f * c.z));
+    img.pixels[4 * i + 3] = 255;
+  }
+  return img;
+}
+
 AtlasScore scoreAgainstTruth(std::span<const Float3> truth, std::span<const Float3> method,
                              std::span<const std::uint8_t> mask, float exposure) {
   AtlasScore s;

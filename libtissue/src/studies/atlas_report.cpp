@@ -80,8 +80,9 @@ std::string truthCacheName(const std::string& frame, std::uint64_t key) {
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016" PRIx64, key);
   // The tracer's version: raise it when the estimator changes, so that old images are not reused.
-  // v2: local majorants; v3: the next-event MIS towards the beams (new estimators, new noise).
-  return "truth_v3_" + frame + "_" + hex + ".bin";
+  // v2: local majorants; v3: the next-event MIS towards the beams (new estimators, new noise);
+  // v4: the glossy reflection off the interpolated (smooth) normal.
+  return "truth_v4_" + frame + "_" + hex + ".bin";
 }
 
 std::optional<truth::TruthImage> readTruthCache(const std::filesystem::path& file) {
@@ -187,9 +188,13 @@ void writeAtlasReport(AtlasResult& result, const AtlasConfig& config,
   nlohmann::json skips = nlohmann::json::array();
   for (const auto& [what, why] : skipped)
     skips.push_back({{"setting", what}, {"reason", why}});
-  const nlohmann::json json = {{"width", config.width}, {"height", config.height},
-                               {"quick", config.quick}, {"gl_renderer", config.glRenderer},
-                               {"truth", truthJson},    {"results", rows},
+  const nlohmann::json json = {{"width", config.width},
+                               {"height", config.height},
+                               {"quick", config.quick},
+                               {"artist_terms", config.artistTerms},
+                               {"gl_renderer", config.glRenderer},
+                               {"truth", truthJson},
+                               {"results", rows},
                                {"skipped", skips}};
   result.output.json = jsonText(json);
   Report& report = result.output.report;

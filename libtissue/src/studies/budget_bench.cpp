@@ -6,10 +6,13 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <tuple>
 
 #include "atlas_detail.h"
+#include "budget_bench_pixels.h"
 #include "json_text.h"
 #include "tissue/core/stopwatch.h"
 #include "tissue/scene/session.h"
@@ -66,6 +69,9 @@ struct Bench {
   std::vector<std::vector<Float3>> shapes;  // the poked organ's geometric positions per frame
   const truth::TruthImage* truth = nullptr;
   std::vector<Float3> truthLinear;
+  std::vector<std::vector<std::uint8_t>> organMasks;  // per organ
+  std::vector<std::uint8_t> interiorMask;
+  std::vector<Float3> lastImage;  // the last run's linear radiance
 
   // One run: warm-up and timed frames cycling through the poke, then the last shape scored.
   Result<BudgetRun> run(double abortMs = 1e30) {
@@ -101,7 +107,13 @@ struct Bench {
     if (!linear) return linear.error();
     const AtlasScore score = scoreAgainstTruth(truthLinear, *linear, truth->covered);
     r.relRms = score.relRms;
+    r.gain = score.gain;
+    r.shapeRelRms = score.shapeRelRms;
     r.relRmsDebiased = debiasedError(score.relRms, truthNoiseRelRms(*truth));
+    for (const auto& mask : organMasks)
+      r.organRelRms.push_back(scoreAgainstTruth(truthLinear, *linear, mask).relRms);
+    r.interiorRelRms = scoreAgainstTruth(truthLinear, *linear, interiorMask).relRms;
+    lastImage = std::move(*linear);
     r.choices = scene.budgetChoices();
     if (scene.qualityController()) r.planChanges = scene.qualityController()->plansChanged() - changesBefore;
     return r;
@@ -133,6 +145,8 @@ std::string jsonOf(const BudgetBenchResult& b, const BudgetBenchConfig& config) 
                          {"frame_ms_p95", f.frameMsP95},
                          {"rel_rms", f.relRms},
                          {"rel_rms_debiased", f.relRmsDebiased},
+                         {"rel_rms_off_silhouettes", f.interiorRelRms},
+                         {"organ_rel_rms", f.organRelRms},
                          {"too_slow", f.tooSlow}});
   const auto names = placements();
   for (const BudgetRun& c : b.controller) {
@@ -147,18 +161,26 @@ std::string jsonOf(const BudgetBenchResult& b, const BudgetBenchConfig& config) 
                          {"fallback", c.choices[i].fallback},
                          {"planes", c.choices[i].mesh.planes},
                          {"tangents", c.choices[i].mesh.tangents}});
-    runs.push_back({{"budget_ms", c.budgetMs}, {"plan_changes", c.planChanges}, {"choices", choices}});
+    runs.push_back({{"budget_ms", c.budgetMs},
+                    {"plan_changes", c.planChanges},
+                    {"rel_rms_off_silhouettes", c.interiorRelRms},
+                    {"organ_rel_rms", c.organRelRms},
+                    {"choices", choices}});
   }
   const nlohmann::json json = {{"width", config.width},
                                {"height", config.height},
                                {"session_frames", {config.firstFrame, config.lastFrame}},
                                {"timed_frames", config.timedFrames},
                                {"warmup_frames", config.warmupFrames},
+                               {"artist_terms", config.artistTerms},
                                {"truth",
                                 {{"samples_per_pixel", b.truthSpp},
                                  {"ms", b.truthMs},
                                  {"noise_rel_rms", b.truthNoiseRelRms},
-                                 {"organ_pixels", b.organPixels}}},
+                                 {"organ_pixels", b.organPixels},
+                                 {"organ_pixels_off_silhouettes", b.interiorPixels}}},
+                               {"organs", b.organNames},
+                               {"organ_pixel_counts", b.organPixelCounts},
                                {"results", results},
                                {"fixed", fixedRuns},
                                {"controller", runs}};
@@ -177,10 +199,23 @@ void writeReport(BudgetBenchResult& b, const BudgetBenchConfig& config) {
                       r.withinTenPercent ? "yes" : "no", fixed(r.relRms), fixed(r.relRmsDebiased),
                       r.fixedBest.empty() ? "none" : r.fixedBest, fixed(r.fixedBestRelRms),
                       fixed(r.fixedBestRelRmsDebiased), r.beatsFixed ? "yes" : "no"});
-  Table f{{"fixed setting (all organs)", "median ms", "p95 ms", "rel RMS", "debiased"}, {}};
+  Table f{{"fixed setting (all organs)", "median ms", "p95 ms", "rel RMS", "debiased", "off silhouettes"},
+          {}};
+  for (const std::string& n : b.organNames)
+    f.header.push_back(n);
+  const auto organCells = [](const BudgetRun& r, std::vector<std::string> row) {
+    row.push_back(fixed(r.interiorRelRms));
+    for (double e : r.organRelRms)
+      row.push_back(fixed(e));
+    return row;
+  };
   for (const BudgetRun& r : b.fixed)
-    f.rows.push_back({r.method + " " + r.setting, fixed(r.frameMsMedian, 1), fixed(r.frameMsP95, 1),
-                      fixed(r.relRms), fixed(r.relRmsDebiased)});
+    if (!r.tooSlow)
+      f.rows.push_back(organCells(r, {r.method + " " + r.setting, fixed(r.frameMsMedian, 1),
+                                      fixed(r.frameMsP95, 1), fixed(r.relRms), fixed(r.relRmsDebiased)}));
+  for (const BudgetRun& r : b.controller)
+    f.rows.push_back(organCells(r, {"controller, budget " + fixed(r.budgetMs, 1), fixed(r.frameMsMedian, 1),
+                                    fixed(r.frameMsP95, 1), fixed(r.relRms), fixed(r.relRmsDebiased)}));
   Table c{{"budget ms", "organ", "footprint px", "view", "chosen", "predicted ms"}, {}};
   const auto names = placements();
   for (const BudgetRun& r : b.controller)
@@ -193,8 +228,9 @@ void writeReport(BudgetBenchResult& b, const BudgetBenchConfig& config) {
   char truthLine[256];
   std::snprintf(
       truthLine, sizeof truthLine,
-      "Truth: %d spp, %.0f s, %d organ pixels, noise rel RMS %.3f (debiased = sqrt(err^2 - noise^2)).\n\n",
-      b.truthSpp, b.truthMs / 1e3, b.organPixels, b.truthNoiseRelRms);
+      "Truth: %d spp, %.0f s, %d organ pixels (%d off the silhouettes), noise rel RMS %.3f (debiased = "
+      "sqrt(err^2 - noise^2)).\n\n",
+      b.truthSpp, b.truthMs / 1e3, b.organPixels, b.interiorPixels, b.truthNoiseRelRms);
   b.output.summary = markdownTable(t);
   report.add("budget_bench.md", "# Budget bench\n\n" + std::string(truthLine) + markdownTable(t) + "\n" +
                                     markdownTable(f) + "\n" + markdownTable(c));
@@ -260,9 +296,13 @@ Result<BudgetBenchResult> runBudgetBench(const BudgetBenchConfig& config) {
   scene::SceneSettings settings = config.scene;
   settings.renderer.finishPasses = true;  // llvmpipe: pass times to completion, for the controller
   settings.renderer.samples = 0;
+  if (!config.artistTerms) {  // the truth is lit by the scene's lights alone, off the mesh's shape
+    settings.ambient = {};
+    settings.normalMaps = false;
+  }
   auto created = scene::Scene::create({}, settings);
   if (!created) return created.error();
-  Bench bench{config, std::move(*created), std::move(shapes), nullptr, {}};
+  Bench bench{config, std::move(*created), std::move(shapes), nullptr, {}, {}, {}, {}};
   scene::Scene& sc = bench.scene;
   for (const Placement& p : placements()) {
     scene::OrganDesc d{.mesh = config.mesh, .material = config.material, .model = p.model};
@@ -278,10 +318,12 @@ Result<BudgetBenchResult> runBudgetBench(const BudgetBenchConfig& config) {
   scene::OrganAssets all = sc.assets(0);
   all.mesh = SurfaceMesh{};
   std::vector<Float3> world;
+  std::vector<std::uint32_t> firstTriangle;
   const auto places = placements();
   for (std::size_t i = 0; i < places.size(); ++i) {
     const scene::OrganAssets& a = sc.assets(i);
     const auto base = std::uint32_t(world.size());
+    firstTriangle.push_back(std::uint32_t(all.mesh.triangles.size()));
     for (std::size_t v = 0; v < a.mesh.positions.size(); ++v) {
       const Float3 p = i == 0 ? bench.shapes.back()[a.mesh.geometricIndex[v]] : a.mesh.positions[v];
       world.push_back(transformPoint(places[i].model, p));
@@ -305,17 +347,25 @@ Result<BudgetBenchResult> runBudgetBench(const BudgetBenchConfig& config) {
     say(line);
     return p.seconds < config.truthSeconds;
   };
+  // The atlas's cache: its key, its file format (written atomically).
+  std::filesystem::path cacheFile;
   std::optional<truth::TruthImage> cached;
-  if (!config.truthCache.empty()) {
-    cached = detail::readTruthCache(config.truthCache);  // the atlas's cache format, written atomically
-    if (cached && (cached->width != config.width || cached->height != config.height)) cached.reset();
+  if (!config.truthCacheDir.empty()) {
+    auto material = scene::truthMaterialOf(all);
+    if (!material) return material.error();
+    const std::uint64_t key = detail::truthKey(world, all.mesh, *material, frame, ts, config.truthSeconds);
+    cacheFile = config.truthCacheDir / detail::truthCacheName("budget", key);
+    cached = detail::readTruthCache(cacheFile);
   }
   Result<truth::TruthImage> truthImage =
       cached ? Result<truth::TruthImage>(std::move(*cached)) : scene::renderTruth(all, world, frame, ts);
   if (!truthImage) return truthImage.error();
-  if (cached) say("truth from " + config.truthCache.string());
-  if (!cached && !config.truthCache.empty())
-    if (auto w = detail::writeTruthCache(config.truthCache, *truthImage); !w) return w.error();
+  if (cached) say("truth from " + cacheFile.string());
+  if (!cached && !cacheFile.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(config.truthCacheDir, ec);
+    if (auto w = detail::writeTruthCache(cacheFile, *truthImage); !w) return w.error();
+  }
   BudgetBenchResult out;
   out.truthSpp = truthImage->samplesPerPixel;
   out.truthMs = 1e3 * truthImage->seconds;
@@ -324,6 +374,32 @@ Result<BudgetBenchResult> runBudgetBench(const BudgetBenchConfig& config) {
     out.organPixels += c;
   bench.truth = &*truthImage;
   bench.truthLinear.assign(truthImage->radiance.begin(), truthImage->radiance.end());
+  // Which organ each pixel shows, and which pixels are off every silhouette.
+  auto pixels = detail::organPixels(world, all.mesh.triangles, firstTriangle, frame.camera, config.width,
+                                    config.height);
+  if (!pixels) return pixels.error();
+  for (std::size_t i = 0; i < places.size(); ++i) {
+    bench.organMasks.push_back(detail::organMask(*pixels, int(i), false));
+    out.organNames.push_back(places[i].name);
+    int n = 0;
+    for (std::uint8_t m : bench.organMasks.back())
+      n += m;
+    out.organPixelCounts.push_back(n);
+  }
+  bench.interiorMask = detail::organMask(*pixels, -1, true);
+  for (std::uint8_t m : bench.interiorMask)
+    out.interiorPixels += m;
+  say("organ pixels per organ: " +
+      [&] {
+        std::string t;
+        for (std::size_t i = 0; i < places.size(); ++i)
+          t += std::string(i ? ", " : "") + places[i].name + " " + std::to_string(out.organPixelCounts[i]);
+        return t;
+      }() +
+      "; off the silhouettes " + std::to_string(out.interiorPixels) + " of " +
+      std::to_string(out.organPixels));
+  out.output.report.images.push_back(
+      {"truth.png", toneMapped(bench.truthLinear, config.width, config.height)});
   // 4 every table setting on every organ.
   quality::QualityTable table = quality::defaultQualityTable();
   if (!settings.qualityTable.empty()) {
@@ -332,6 +408,7 @@ Result<BudgetBenchResult> runBudgetBench(const BudgetBenchConfig& config) {
     table = std::move(*loaded);
   }
   if (table.options.empty()) return Error{"budget bench: the quality table has no options"};
+  std::map<std::string, std::tuple<double, Image8, Image8>> bestOfMethod;  // rel RMS, frame, error
   for (const quality::QualityOption& option : table.options) {
     for (std::size_t i = 0; i < sc.organCount(); ++i)
       if (auto ok = sc.setMethodOption(i, option); !ok) return ok.error();
@@ -340,8 +417,24 @@ Result<BudgetBenchResult> runBudgetBench(const BudgetBenchConfig& config) {
     r->method = option.method;
     r->setting = option.setting;
     say("fixed " + option.method + " " + option.setting + ": median " + fixed(r->frameMsMedian, 1) +
-        " ms, p95 " + fixed(r->frameMsP95, 1) + " ms, rel RMS " + fixed(r->relRms));
+        " ms, p95 " + fixed(r->frameMsP95, 1) + " ms, rel RMS " + fixed(r->relRms) +
+        ", off the silhouettes " + fixed(r->interiorRelRms) + ", gain " + fixed(r->gain) + ", shape " +
+        fixed(r->shapeRelRms));
+    // Each method's best setting: its frame and error image.
+    if (!r->tooSlow) {
+      auto& [bestRelRms, frameImage, error] = bestOfMethod[option.method];
+      if (frameImage.pixels.empty() || r->relRms < bestRelRms) {
+        bestRelRms = r->relRms;
+        frameImage = toneMapped(bench.lastImage, config.width, config.height);
+        error =
+            errorImage(bench.truthLinear, bench.lastImage, truthImage->covered, config.width, config.height);
+      }
+    }
     out.fixed.push_back(std::move(*r));
+  }
+  for (auto& [method, best] : bestOfMethod) {
+    out.output.report.images.push_back({"frame_fixed_" + method + ".png", std::move(std::get<1>(best))});
+    out.output.report.images.push_back({"error_fixed_" + method + ".png", std::move(std::get<2>(best))});
   }
   // 5 the budgets: given, or from the fixed settings' times (tight: just above the cheapest;
   // loose: the dearest but the slowest outliers; one between).
@@ -363,6 +456,12 @@ Result<BudgetBenchResult> runBudgetBench(const BudgetBenchConfig& config) {
     r->budgetMs = budget;
     say("budget " + fixed(budget, 1) + " ms: median " + fixed(r->frameMsMedian, 1) + " ms, p95 " +
         fixed(r->frameMsP95, 1) + " ms, rel RMS " + fixed(r->relRms));
+    const std::string tag = "budget_" + fixed(budget, 0);
+    out.output.report.images.push_back(
+        {"frame_" + tag + ".png", toneMapped(bench.lastImage, config.width, config.height)});
+    out.output.report.images.push_back(
+        {"error_" + tag + ".png",
+         errorImage(bench.truthLinear, bench.lastImage, truthImage->covered, config.width, config.height)});
     BudgetResult res;
     res.budgetMs = budget;
     res.frameMsMedian = r->frameMsMedian;

@@ -3,9 +3,11 @@
 #include "transport.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
 
 #include "interface_math.h"
@@ -64,6 +66,32 @@ Transport::Transport(const RayMesh& rays, const TruthMesh& mesh, const TruthMate
     const double len = glm::length(n);
     m_faceNormal.push_back(len > 0.0 ? n / len : V(0.0));
     m_faceVertex.push_back(a);
+  }
+  {
+    // Weld by position, so a UV seam's copies share one normal as the mesh module's do.
+    std::map<std::array<float, 3>, std::size_t> weld;
+    std::vector<std::size_t> welded(mesh.positions.size());
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+      const Float3 p = mesh.positions[v];
+      welded[v] = weld.try_emplace({p.x, p.y, p.z}, weld.size()).first->second;
+    }
+    std::vector<V> sum(weld.size(), V(0.0));
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+      const Triangle& t = mesh.triangles[f];
+      for (int c = 0; c < 3; ++c) {
+        const V p = v3(mesh.positions[t[c]]);
+        const V e1 = v3(mesh.positions[t[(c + 1) % 3]]) - p, e2 = v3(mesh.positions[t[(c + 2) % 3]]) - p;
+        const double l1 = glm::length(e1), l2 = glm::length(e2);
+        if (l1 <= 0.0 || l2 <= 0.0) continue;
+        const double angle = std::acos(std::clamp(glm::dot(e1, e2) / (l1 * l2), -1.0, 1.0));
+        sum[welded[t[c]]] += angle * m_faceNormal[f];
+      }
+    }
+    m_vertexNormal.resize(mesh.positions.size());
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+      const double len = glm::length(sum[welded[v]]);
+      m_vertexNormal[v] = len > 0.0 ? sum[welded[v]] / len : V(0.0);
+    }
   }
   m_sigmaTMin = {kInf, kInf, kInf};
   for (const TruthLayer& layer : material.layers) {
@@ -180,7 +208,9 @@ Rgb Transport::trace(V o, V d, RandomStream& rng, PathStats& stats, PathScratch&
         break;
       }
       if (m_settings.surfaceRoughness > 0.0) {
-        const Rgb gl = glossy(p, -d, n), carried = withDirections(w, ratio);
+        // The highlight off the smooth surface the renderer draws (its interpolated normal); the
+        // transport through the boundary keeps the flat triangle's.
+        const Rgb gl = glossy(p, -d, shadingNormal(*hit)), carried = withDirections(w, ratio);
         for (std::size_t b = 0; b < 3; ++b)
           radiance[b] += carried[b] * gl[b];
       }
@@ -654,6 +684,14 @@ V Transport::scatter(const V& d, const LayerBands& layer, std::size_t hero, Rgb&
           std::clamp(ratio[b] * optics::henyeyGreenstein(cosTheta, layer.g[b]) / heroPhase, 1e-200, 1e200);
   }
   return scatterDirection(d, cosTheta, cosPhi, sinPhi);
+}
+
+V Transport::shadingNormal(const MeshHit& hit) const {
+  const Triangle& t = m_mesh.triangles[hit.triangle];
+  const V n = (1.0 - hit.b1 - hit.b2) * m_vertexNormal[t[0]] + hit.b1 * m_vertexNormal[t[1]] +
+              hit.b2 * m_vertexNormal[t[2]];
+  const double len = glm::length(n);
+  return len > 0.0 ? n / len : m_faceNormal[hit.triangle];
 }
 
 // The lights reflected by the outer surface at p towards `toEye`: a Beckmann microfacet lobe

@@ -153,12 +153,16 @@ class Transport {
   glm::dvec3 scatter(const glm::dvec3& d, const LayerBands& layer, std::size_t hero, Rgb& ratio,
                      optics::detail::RandomStream& rng) const;
   Rgb glossy(const glm::dvec3& p, const glm::dvec3& toEye, const glm::dvec3& n) const;
+  glm::dvec3 shadingNormal(const MeshHit& hit) const;
 
   const RayMesh& m_rays;
   const TruthMesh& m_mesh;
   const PathTraceSettings& m_settings;
   double m_nTissue = 1.4, m_nAmbient = 1.0, m_eps = 1e-5;
   std::vector<glm::dvec3> m_faceNormal;
+  // Per vertex: the corner-angle weighted normal over every triangle at its position (seams
+  // welded), the smooth surface the renderer shades; the glossy reflection reads it.
+  std::vector<glm::dvec3> m_vertexNormal;
   std::vector<glm::dvec3> m_faceVertex;  // each triangle's first vertex, mm
   std::vector<LayerBands> m_layers;
   // Local majorants: each layer's class (layers with equal coefficients share one), the depth

@@ -64,6 +64,8 @@ void registerAtlasCommand(CLI::App& app, const GlobalOptions& global, int& exitC
                   "truth time per frame at most, s (default 120; quick at most 5)");
   cmd->add_option("--frames", o->config.frames, "timed frames per setting (default 3; quick at most 2)");
   cmd->add_option("--cache", o->cache, "folder of cached truth images (default <out>/truth_cache)");
+  cmd->add_flag("--artist-terms", o->config.artistTerms,
+                "score with the ambient fill light and the normal maps, which the truth lacks (default off)");
   cmd->callback([o, &global, &exitCode] { exitCode = run(*o, global); });
 }
 

@@ -29,8 +29,8 @@ int run(BudgetBenchOptions o, const GlobalOptions& global) {
   o.config.mesh = dataDir() / "meshes" / "liver.obj";
   o.config.material = dataDir() / "materials" / "liver.json";
   o.config.session = dataDir() / "sessions" / "liver_poke_grasp.json";
-  if (!o.places.out.empty() && o.config.truthCache.empty())
-    o.config.truthCache = std::filesystem::path(o.places.out) / "truth_cache.bin";
+  if (!o.places.out.empty() && o.config.truthCacheDir.empty())
+    o.config.truthCacheDir = std::filesystem::path(o.places.out) / "truth_cache";
   o.config.onProgress = [](const std::string& line) {
     std::fprintf(stderr, "budget-bench: %s\n", line.c_str());
   };
@@ -52,11 +52,13 @@ void registerBudgetBenchCommand(CLI::App& app, const GlobalOptions& global, int&
   addImageSizeOptions(cmd, o->config.width, o->config.height);
   cmd->add_option("--truth-seconds", o->config.truthSeconds, "truth time at most, s (default 120)");
   cmd->add_option("--spp", o->config.truthSpp, "truth samples per pixel at most (default 4096)");
-  cmd->add_option("--truth-cache", o->config.truthCache,
-                  "the truth image's file (default <out>/truth_cache.bin)");
+  cmd->add_option("--truth-cache", o->config.truthCacheDir,
+                  "folder of truth images, named by what they depend on (default <out>/truth_cache)");
   cmd->add_option("--frames", o->config.timedFrames, "timed frames per run (default 60)");
   cmd->add_option("--warmup", o->config.warmupFrames, "untimed frames per run first (default 40)");
   cmd->add_option("--quality-table", o->config.scene.qualityTable, "an atlas JSON as the controller's table");
+  cmd->add_flag("--artist-terms", o->config.artistTerms,
+                "score with the ambient fill light and the normal maps, which the truth lacks (default off)");
   cmd->callback([o, &global, &exitCode] { exitCode = run(*o, global); });
 }
 

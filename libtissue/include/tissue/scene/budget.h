@@ -20,9 +20,6 @@
 
 namespace tissue::scene {
 
-/// The wrap term of the lit fallback (LitSettings::wrap, unitless): Green 2004's half wrap.
-inline constexpr float kFallbackWrap = 0.5f;
-
 /// The view of an organ with object bounds `objectBounds` under `model` from `camera` on a
 /// `width` x `height` image: the pixels its bounds' projection covers (the rectangle of the
 /// eight corners, clipped to the image, times pi / 4 for the ellipse inside it; a box through
@@ -38,7 +35,7 @@ std::vector<int> offeredOptions(const quality::QualityTable& table, const OrganA
 /// "6g-plain", "50", "adaptive-100", "default", "wrap"), over `base`.
 Result<MethodChoices> choicesOfSetting(const quality::QualityOption& option, const MethodChoices& base);
 
-/// The option as the renderer's settings for `organ` (the lit fallback with kFallbackWrap).
+/// The option as the renderer's settings for `organ` (the lit fallback with opticalWrap).
 Result<render::MethodSettings> methodOfOption(const quality::QualityOption& option, const OrganAssets& organ,
                                               const OrganTextures& textures, const MethodChoices& base);
 

@@ -29,9 +29,11 @@ namespace tissue::scene {
 
 /// The choices behind the methods' settings (plain struct with defaults: the main job's).
 struct MethodChoices {
-  /// Lit: the wrap term (render::LitSettings::wrap, unitless 0..1; 0: plain Lambert). The quality
-  /// controller's fallback and the atlas's "lit wrap" row use budget.h's kFallbackWrap.
+  /// Lit: the wrap term (render::LitSettings::wrap, unitless 0..1; 0: plain Lambert).
   float litWrap = 0.0f;
+  /// Lit: the wrap term from the optics instead (opticalWrap): the quality controller's fallback
+  /// and the atlas's "lit wrap" row.
+  bool litWrapFromOptics = false;
   std::string kernel =
       "preintegrated";           ///< separable model: svd, preintegrated, guided, manual, deon, jimenez
   int taps = 17;                 ///< separable taps, odd, 5..63
@@ -78,9 +80,24 @@ Result<render::MethodSettings> organMethod(render::ShadingMethod method, const O
 /// kernel of `choices` is (materials::makeSeparableMaterial).
 Result<reference::RadialProfile> separableTruth(const OrganAssets& organ, const MethodChoices& choices = {});
 
-/// The organ as a scene object of `mesh`, with its textures and `method`.
+/// The wrap term (render::LitSettings::wrap, unitless) that stands for the organ's light
+/// diffusing past the terminator: scattering carries light about a diffusion length
+/// ell = 1 / sigma_tr (the first layer's smallest, i.e. the band that travels furthest) around a
+/// surface whose curvature radius is about R = sqrt(area / 4 pi) (a sphere of the organ's area),
+/// so light reaches ell / R radians past the terminator, N.L >= -ell / R, the zero of Green
+/// 2004's (N.L + w) / (1 + w). Clamped to 0..0.5. The liver: ell 1.8 mm, R ~ 50 mm, w ~ 0.04.
+float opticalWrap(const OrganAssets& organ);
+
+/// The organ's outer surface for the renderer: its specular reflectance at normal incidence is
+/// the Fresnel F0 of the material's ior (specularF0), as the truth's boundary reflects
+/// (common/specular.glsl); `ambient` (linear RGB radiance) is an artist's fill light that the
+/// truth does not have (SceneSettings::ambient).
+render::Material surfaceMaterialOf(const OrganAssets& organ, Float3 ambient = render::Material{}.ambient);
+
+/// The organ as a scene object of `mesh`, with its textures, `method` and `surface`
+/// (surfaceMaterialOf).
 render::SceneObject organObject(render::MeshHandle mesh, const OrganTextures& textures,
-                                render::MethodSettings method);
+                                render::MethodSettings method, const render::Material& surface);
 
 /// "lit", "separable", "texture-space", "ray-march" (or "raymarch") or "parallax"; the error
 /// lists them.

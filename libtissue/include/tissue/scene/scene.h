@@ -61,6 +61,15 @@ struct SceneSettings {
   std::filesystem::path sharedMeshesDir;  ///< where scenarios find meshes they name by bare name
   OrganLoopConfig loop;                   ///< planes, re-fit tolerance, mesh threads, the instrument
   MethodChoices methods;                  ///< kernel, taps, Gaussians, ray-march samples
+  /// Linear RGB ambient radiance on every organ drawn lit, separable, texture space or parallax:
+  /// an artist's fill light that the path-traced truth does not have (the atlas and the budget
+  /// bench score with 0; docs/RESULTS.md gives its error).
+  Float3 ambient{0.06f, 0.055f, 0.055f};  ///< render::Material{}.ambient
+  /// Draw each organ's normal map (its material's textures.normal_map): mesoscale bumps that the
+  /// mesh does not have and the path-traced truth does not model, so the atlas and the budget
+  /// bench score with false (docs/RESULTS.md gives its error). false also drops the tangent
+  /// frames the map needed (quality::meshWorkOf).
+  bool normalMaps = true;
   /// false: no context nor renderer, the simulation only (a replay, a server): step() and
   /// advance() without an image work, render*() and setMethod() fail, upload() does nothing.
   bool gl = true;

@@ -51,6 +51,9 @@ double debiasedError(double relRms, double noiseRelRms);
 /// The renderer's output transform of linear radiance (exposure, Reinhard, sRGB), 0..1.
 Float3 toneMap(Float3 radiance, float exposure = 1.0f);
 
+/// An image of linear radiance (rows top to bottom) through toneMap, as displayed. RGBA8.
+Image8 toneMapped(std::span<const Float3> linear, int width, int height, float exposure = 1.0f);
+
 /// A per-pixel error image: |M - T| (luminance) over the mean truth luminance, mapped 0..`scale`
 /// to black-red-yellow-white; pixels off the mask dark blue. RGBA8.
 Image8 errorImage(std::span<const Float3> truth, std::span<const Float3> method,
@@ -68,7 +71,7 @@ struct AtlasSetting {
 };
 
 /// Every setting the atlas scores (quick: fewer): lit plain and with the quality controller's
-/// wrap term ("wrap": scene::kFallbackWrap), separable kernels and taps, texture-space Gaussians
+/// wrap term ("wrap": scene::opticalWrap), separable kernels and taps, texture-space Gaussians
 /// with and without Jimenez's optimisations, ray-march samples (fixed and adaptive), parallax.
 /// Each name reads back through scene::choicesOfSetting.
 std::vector<AtlasSetting> atlasSettings(bool quick);
@@ -107,7 +110,11 @@ struct AtlasConfig {
   int truthSpp = 256;              ///< samples per pixel at most (quick: 64)
   double truthSeconds = 120.0;     ///< s per frame at most for the truth (quick: 5; backlit 3x)
   int threads = 0;                 ///< truth threads; 0: all cores
-  std::string glRenderer;          ///< GL_RENDERER, for the report
+  /// Score with the product's artist's terms, which the truth does not have: the ambient fill
+  /// light and the normal maps of SceneSettings (`scene`). Off (the default), the scored frames
+  /// have neither, as the truth; on, the report measures what they cost.
+  bool artistTerms = false;
+  std::string glRenderer;  ///< GL_RENDERER, for the report
   /// One line of progress (each truth pass, each frame's methods), on the calling thread; empty:
   /// none. The library never writes to stderr itself.
   std::function<void(const std::string&)> onProgress;

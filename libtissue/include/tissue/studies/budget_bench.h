@@ -37,9 +37,14 @@ struct BudgetBenchConfig {
   double truthSeconds = 120.0;  ///< s for the truth at most
   int truthSpp = 4096;          ///< truth samples per pixel at most
   int threads = 0;              ///< truth threads; 0: all cores
-  /// A file of the truth image, read when it is there (and of this size), else written: delete it
-  /// when the scene, the frames or the truth's settings change.
-  std::filesystem::path truthCache;
+  /// A folder of truth images named by a hash of everything the truth depends on (the meshes'
+  /// positions, material, camera, lights, tracer settings and time): read when there, else
+  /// written. Empty: none.
+  std::filesystem::path truthCacheDir;
+  /// Score with the product's artist's terms, which the truth does not have: the ambient fill
+  /// light and the normal maps of SceneSettings (`scene`). Off (the default), the scored frames
+  /// have neither, as the truth; on, the report measures what they cost.
+  bool artistTerms = false;
   std::function<void(const std::string&)> onProgress;  ///< one line per step; empty: none
 };
 
@@ -51,6 +56,9 @@ struct BudgetRun {
   double relRms = 0.0, relRmsDebiased = 0.0;     ///< the last frame against the truth
   std::vector<scene::BudgetChoice> choices;      ///< the controller's, at the last frame
   int planChanges = 0;                           ///< the controller's plans during the run
+  std::vector<double> organRelRms;               ///< per organ (placements' order): rel RMS over its pixels
+  double interiorRelRms = 0.0;           ///< rel RMS over pixels off every silhouette (BudgetBenchResult)
+  double gain = 0.0, shapeRelRms = 0.0;  ///< AtlasScore's: the overall level, the error once matched
   bool tooSlow = false;  ///< a fixed setting stopped at a frame over maxFixedFrameMs (not scored)
 };
 
@@ -71,7 +79,12 @@ struct BudgetBenchResult {
   int truthSpp = 0;
   double truthMs = 0.0, truthNoiseRelRms = 0.0;
   int organPixels = 0;
-  StudyOutput output;  ///< budget_bench.json, .md, budget_bench.png (rel RMS against budget)
+  /// Organ pixels whose 4 x 4 sub-pixel rays all meet the same organ: off the silhouettes, where
+  /// the truth's jittered rays and the renderer's one sample per pixel see the same surface.
+  int interiorPixels = 0;
+  std::vector<std::string> organNames;  ///< the organs, in the scene's order
+  std::vector<int> organPixelCounts;    ///< organ pixels per organ
+  StudyOutput output;                   ///< budget_bench.json, .md, budget_bench.png (rel RMS against budget)
 };
 
 /// Runs the bench. Errors name the file or step.
