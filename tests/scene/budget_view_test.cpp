@@ -105,5 +105,17 @@ TEST(OpticalWrap, IsTheDiffusionLengthOverTheCurvatureRadius) {
   EXPECT_EQ(opticalWrap(cubeOrgan(0.5f, l)), 0.5f);  // a tiny organ: clamped to Green's half wrap
 }
 
+TEST(SurfaceMaterial, ReflectsWithTheFresnelOfTheMaterialsIndex) {
+  // F0 = ((n - 1) / (n + 1))^2 at normal incidence from air, as the truth's boundary reflects.
+  OrganAssets o = cubeOrgan(10.0f, {});
+  for (float n : {1.33f, 1.4f, 1.5f}) {
+    o.material.ior = n;
+    const render::Material m = surfaceMaterialOf(o, {0.1f, 0.2f, 0.3f});
+    const double f0 = std::pow((double(n) - 1.0) / (double(n) + 1.0), 2.0);
+    EXPECT_NEAR(double(m.specular), f0, 1e-6) << "ior " << n;
+    EXPECT_EQ(m.ambient.y, 0.2f);  // the artist's fill light passes through as given
+  }
+}
+
 }  // namespace
 }  // namespace tissue::scene
