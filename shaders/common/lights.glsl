@@ -48,11 +48,19 @@ float shadowFactor(int i, vec3 P, vec3 N) {
 
 // Distance (mm) light i travels inside the object before reaching P (0 when nothing is in
 // front of P, or without a shadow map): the shadow map's nearest distance subtracted from P's.
+// The nearest over the 3x3 texels around P (the PCF's footprint): near the object's outline as
+// the light sees it, a point on the far side projects up to a texel outside the texels the
+// rasteriser covered, and a single lookup there reads "nothing in front" (thickness 0, full
+// transmittance) and lights the dark side in streaks along the map's texel columns.
 float thicknessMm(int i, vec3 P) {
   int layer = u_lightShadowLayer[i];
   if (layer < 0) return 0.0;
   vec3 c = shadowCoordinates(i, P);
   if (c.z <= 0.0 || any(lessThan(c.xy, vec2(0.0))) || any(greaterThan(c.xy, vec2(1.0)))) return 0.0;
+  vec2 texel = 1.0 / vec2(textureSize(u_shadowMaps, 0).xy);
   float nearest = texture(u_shadowMaps, vec3(c.xy, float(layer))).r;
+  for (int y = -1; y <= 1; ++y)
+    for (int x = -1; x <= 1; ++x)
+      nearest = min(nearest, texture(u_shadowMaps, vec3(c.xy + vec2(x, y) * texel, float(layer))).r);
   return max(lightDistance(u_lightVector[i], P) - nearest, 0.0);
 }

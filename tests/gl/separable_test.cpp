@@ -1,6 +1,7 @@
 // Screen-space separable SSS (Jimenez et al. 2015; Freude 2014 ch. 4): a golden image, energy
 // through the blur, follow-surface at a depth step (eq. 4.12), per-object kernels without
-// bleeding, agreement with the CPU reference on a flat patch, and the pass list.
+// bleeding, agreement with the CPU reference on a flat patch, transmittance where the shadow
+// map is coarse, and the pass list.
 #include <cmath>
 
 #include "gl_test_support.h"
@@ -182,6 +183,54 @@ TEST_P(SeparableTest, BlurAgreesWithTheCpuReferenceOnAFlatPatch) {
   const auto whole = reference::compareWithReference(frame, blurred->pixels, *exact, profiles);
   EXPECT_EQ(whole.pixels, static_cast<std::size_t>(kSize * kSize));
   EXPECT_GT(whole.rms, rms);
+}
+
+// Jimenez et al. 2010's transmittance reads the light's path inside the object from the shadow
+// map. On a coarse map a point on the dark side near the outline the light sees projects outside
+// the texels the rasteriser covered; a single lookup there reads "nothing in front" and lit the
+// dark side with T(0) (the budget bench's liver lobes showed it as streaks below every organ).
+// A sphere of radius R lit along -z: the light's path to a dark-side point P is the chord 2 |P_z|,
+// so wherever it is past the table's last row (10 mm) no light may come through.
+TEST_P(SeparableTest, TransmittedLightStopsWhereTheChordIsThickOnACoarseShadowMap) {
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
+  render::RendererSettings coarse;
+  coarse.shadowMapSize = 16;  // ~3 mm texels over the 40 mm sphere
+  auto renderer = render::Renderer::create(context->procAddressFunction(), coarse);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  constexpr float kRadiusMm = 20.0f;
+  auto mesh = renderer->createMesh(makeSphere(kRadiusMm, 48, 96).arrays());
+  ASSERT_TRUE(mesh);
+  render::Scene scene = frontScene();
+  scene.camera.eye = {200.0f, 0.0f, 0.0f};  // from the side: both hemispheres
+  scene.camera.up = {0.0f, 0.0f, 1.0f};
+  scene.lights[0].castsShadows = true;
+  scene.objects = {separableObject(*mesh, gaussianKernel(0.5f, 7))};
+  // No ambient: the dark side's diffuse is then the transmitted light alone.
+  scene.objects[0].material.ambient = {0.0f, 0.0f, 0.0f};
+  auto& settings = std::get<render::SeparableSettings>(scene.objects[0].method);
+  settings.transmittance = {{1, 1, 1, 0}, {0, 0, 0, 10}};
+  ASSERT_TRUE(renderer->renderImage(scene, kSize, kSize));
+  auto diffuse = renderer->readFrame(render::FrameView::Diffuse);
+  auto position = renderer->readFrame(render::FrameView::Position);
+  ASSERT_TRUE(diffuse && position);
+  double litMax = 0.0, thickMax = 0.0;
+  int thick = 0;
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      const Float4& p = position->at(x, y);
+      if (p.w <= 0.0f) continue;
+      const double red = diffuse->at(x, y).x;
+      if (p.z > 0.5f * kRadiusMm) litMax = std::max(litMax, red);
+      if (-2.0f * p.z > 14.0f) {  // chord past 10 mm with 4 mm to spare for the map's texels
+        thickMax = std::max(thickMax, red);
+        ++thick;
+      }
+    }
+  }
+  ASSERT_GT(thick, 500);
+  ASSERT_GT(litMax, 0.0);
+  EXPECT_LT(thickMax, 0.02 * litMax) << "light through a chord past the table's 10 mm (" << thick
+                                     << " pixels)";
 }
 
 TEST_P(SeparableTest, TimingsListEverySeparablePass) {

@@ -23,11 +23,11 @@ fs::path outDir() {
   return dir;
 }
 
-/// Pixels within `tol` of an RGB colour.
-int countColour(const tissue::Image8& image, int r, int g, int b, int tol) {
+/// Pixels within `tol` of an RGB colour, in columns [0, maxX) (default: all).
+int countColour(const tissue::Image8& image, int r, int g, int b, int tol, int maxX = -1) {
   int n = 0;
   for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
+    for (int x = 0; x < (maxX < 0 ? image.width : maxX); ++x) {
       const auto* p = image.at(x, y);
       if (std::abs(p[0] - r) <= tol && std::abs(p[1] - g) <= tol && std::abs(p[2] - b) <= tol) ++n;
     }
@@ -64,6 +64,24 @@ TEST(Chart, LogAxesAccepted) {
   ChartSettings settings{"log-log", "springs", "ms", true, true, 400, 300};
   auto written = writeLineChart(outDir() / "chart_log.png", settings, std::span(&s, 1));
   EXPECT_TRUE(written.ok()) << written.error().message;
+}
+
+// The atlas's close-up frame: every point within 0.1 % of the others on log axes. VTK's own
+// range for so narrow a spread drew the axis and no point (the main job's atlas_close-up.png).
+TEST(Chart, PointsWithinATenthOfAPercentStillShowOnLogAxes) {
+  ChartSeries points{
+      "points", {16.9, 18.2, 20.6, 51.0, 277.6}, {0.8771, 0.8773, 0.8772, 0.8771, 0.8769}, false};
+  ChartSeries front{"front", {16.9, 51.0, 277.6}, {0.8771, 0.8771, 0.8769}, true};
+  ChartSettings settings{"narrow", "ms", "rel RMS", true, true, 640, 400};
+  const fs::path png = outDir() / "chart_narrow.png";
+  const ChartSeries both[] = {points, front};
+  auto written = writeLineChart(png, settings, both);
+  ASSERT_TRUE(written.ok()) << written.error().message;
+  auto image = tissue::readImage(png, 3);
+  ASSERT_TRUE(image.ok()) << image.error().message;
+  // Left of the legend (which holds both colours whatever the plot shows).
+  EXPECT_GT(countColour(*image, 31, 119, 180, 30, 500), 20);   // the points, blue
+  EXPECT_GT(countColour(*image, 255, 127, 14, 30, 500), 100);  // the front's line, orange
 }
 
 TEST(Chart, BadInputGivesOneClearError) {

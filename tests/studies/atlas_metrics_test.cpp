@@ -1,8 +1,12 @@
 // The atlas's scores (studies/atlas.h): relative RMS and PSNR of known images over a mask, the
-// truth's own noise and the debiased error, the error image, and the Pareto front of a known set.
+// truth's own noise and the debiased error, the difference of two errors against a noisy truth,
+// the error image, and the Pareto front of a known set.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+#include <span>
+#include <vector>
 
 #include "tissue/scene/budget.h"
 #include "tissue/studies/atlas.h"
@@ -55,6 +59,59 @@ TEST(AtlasMetrics, TruthNoiseAndDebiasedError) {
   EXPECT_NEAR(truthNoiseRelRms(t), 0.1, 1e-6);  // |(0.3, 0, 0.4)| / |(3, 0, 4)|
   EXPECT_NEAR(debiasedError(0.5, 0.3), 0.4, 1e-12);
   EXPECT_EQ(debiasedError(0.1, 0.3), 0.0);
+}
+
+// The difference of two renderings' squared errors against a noisy truth: over many draws of the
+// truth's noise its mean is the noiseless difference (the noise's own n^2 cancels), and its spread
+// is the standard error the function gives from the per-pixel sigma.
+TEST(AtlasMetrics, ErrorDifferenceIsUnbiasedAndItsStderrIsTheSpreadOverNoiseDraws) {
+  constexpr int kPixels = 400;
+  std::vector<Float3> truth, sigma, a, b;
+  std::vector<std::uint8_t> mask(kPixels, 1);
+  for (int i = 0; i < kPixels; ++i) {
+    const float t = 0.5f + 0.4f * std::sin(0.1f * float(i));
+    truth.push_back({t, 0.5f * t, 0.25f * t});
+    sigma.push_back({0.05f * t, 0.04f * t, 0.03f * t});
+    const float bump = 0.02f * std::cos(0.37f * float(i));
+    a.push_back({1.03f * t + bump, 0.5f * t, 0.25f * t - bump});
+    b.push_back({0.98f * t, 0.51f * t, 0.25f * t});
+  }
+  double exactA = 0.0, exactB = 0.0, ref = 0.0;
+  for (int i = 0; i < kPixels; ++i) {
+    const Float3 t = truth[std::size_t(i)], pa = a[std::size_t(i)], pb = b[std::size_t(i)];
+    exactA += double((pa.x - t.x) * (pa.x - t.x) + (pa.y - t.y) * (pa.y - t.y) + (pa.z - t.z) * (pa.z - t.z));
+    exactB += double((pb.x - t.x) * (pb.x - t.x) + (pb.y - t.y) * (pb.y - t.y) + (pb.z - t.z) * (pb.z - t.z));
+    ref += double(t.x * t.x + t.y * t.y + t.z * t.z);
+  }
+  const double exact = (exactA - exactB) / ref;
+  std::mt19937 rng(11);
+  std::normal_distribution<double> gauss;
+  constexpr int kDraws = 4000;
+  double sum = 0.0, sumSq = 0.0, stderrSum = 0.0;
+  for (int k = 0; k < kDraws; ++k) {
+    std::vector<Float3> noisy(truth);
+    for (int i = 0; i < kPixels; ++i) {
+      noisy[std::size_t(i)].x += float(gauss(rng) * double(sigma[std::size_t(i)].x));
+      noisy[std::size_t(i)].y += float(gauss(rng) * double(sigma[std::size_t(i)].y));
+      noisy[std::size_t(i)].z += float(gauss(rng) * double(sigma[std::size_t(i)].z));
+    }
+    const ErrorDifference d = errorDifference(noisy, sigma, a, b, mask);
+    sum += d.squared;
+    sumSq += d.squared * d.squared;
+    stderrSum += d.squaredStderr;
+  }
+  const double mean = sum / kDraws, spread = std::sqrt(sumSq / kDraws - mean * mean);
+  const double stderrMean = stderrSum / kDraws;
+  EXPECT_NEAR(mean, exact, 4.0 * spread / std::sqrt(double(kDraws)) + 0.01 * std::abs(exact));
+  EXPECT_NEAR(stderrMean, spread, 0.08 * spread);
+  // A is the worse here, by more than two standard errors.
+  const ErrorDifference clean = errorDifference(truth, sigma, a, b, mask);
+  EXPECT_GT(clean.squared, 2.0 * clean.squaredStderr);
+  EXPECT_TRUE(clean.bLower());
+  EXPECT_FALSE(clean.aLower());
+  // Swapped, the sign flips; sizes that differ give NaN.
+  EXPECT_NEAR(errorDifference(truth, sigma, b, a, mask).squared, -clean.squared, 1e-12);
+  EXPECT_TRUE(std::isnan(errorDifference(truth, sigma, a, std::span(b).first(10), mask).squared));
 }
 
 TEST(AtlasMetrics, ErrorImageMarksOrganPixelsByTheirError) {

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # tissue-sim budget-bench end to end, shortened (a tiny image, a few frames, a short truth): the
 # JSON's results are at least three budgets, strictly increasing, each with finite frame times and
-# errors against the truth; a bad budget is one line on stderr and a non-zero exit, at once.
+# errors against the truth, and "lower" only beyond the truth's noise; a bad budget is one line on stderr and a non-zero exit, at once.
 set -u
 sim="$1"; dir="$2"; rm -rf "$dir"; mkdir -p "$dir"
 status=0
@@ -28,6 +28,11 @@ for r in results:
     assert 0 < r["rel_rms"] < 10, r
     if r["fixed_best_rel_rms"] is not None:
         assert 0 < r["fixed_best_rel_rms"] < 10, r
+        # "Lower" only by more than two standard errors of the truth's noise on the difference.
+        d, s = r["squared_difference"], r["squared_difference_stderr"]
+        assert math.isfinite(d) and math.isfinite(s) and s >= 0, r
+        assert abs(d - (r["rel_rms"] ** 2 - r["fixed_best_rel_rms"] ** 2)) < 1e-6, r
+        assert r["beats_fixed"] == (d < -2 * s) and r["loses_to_fixed"] == (d > 2 * s), r
 budgets = [r["budget_ms"] for r in results]
 assert all(a < b for a, b in zip(budgets, budgets[1:])), budgets
 # The loosest budget fits some fixed setting (the budgets come from their measured times).

@@ -22,6 +22,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <span>
 #include <vector>
 
 #include "tissue/core/atomic_file.h"
@@ -82,6 +84,31 @@ vtkSmartPointer<vtkTable> seriesTable(const ChartSeries& s) {
   return table;
 }
 
+// The axis's range from the data with a margin. VTK's automatic range for values within ~0.1 % of
+// each other on a log axis draws the ticks and no point (seen on the atlas's close-up frame,
+// every method within noise of the others), so the range is set here: the data's span plus 5 %
+// each side, and at least +-5 % of the mean (a factor 1.1 on a log axis) so that near-equal
+// values sit mid-plot.
+void fixRange(vtkAxis* axis, std::span<const ChartSeries> series, bool yAxis, bool log) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const ChartSeries& s : series)
+    for (double v : yAxis ? s.y : s.x) {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  if (!(lo <= hi)) return;
+  if (log) {
+    double a = std::log10(lo), b = std::log10(hi);
+    const double pad = std::max(0.05 * (b - a), std::log10(1.1) - 0.5 * (b - a));
+    axis->SetUnscaledRange(std::pow(10.0, a - pad), std::pow(10.0, b + pad));
+  } else {
+    const double pad =
+        std::max(0.05 * (hi - lo), 0.05 * std::max(std::abs(lo), std::abs(hi)) - 0.5 * (hi - lo));
+    axis->SetUnscaledRange(lo - (pad > 0.0 ? pad : 1.0), hi + (pad > 0.0 ? pad : 1.0));
+  }
+  axis->SetBehavior(vtkAxis::FIXED);
+}
+
 void styleAxis(vtkAxis* axis, const std::string& title, bool log) {
   axis->SetTitle(title);
   axis->SetLogScale(log);
@@ -125,17 +152,21 @@ Result<void> writeLineChart(const std::filesystem::path& png, const ChartSetting
   }
   styleAxis(chart->GetAxis(vtkAxis::BOTTOM), settings.xLabel, settings.logX);
   styleAxis(chart->GetAxis(vtkAxis::LEFT), settings.yLabel, settings.logY);
+  fixRange(chart->GetAxis(vtkAxis::BOTTOM), series, false, settings.logX);
+  fixRange(chart->GetAxis(vtkAxis::LEFT), series, true, settings.logY);
 
   // Series: the tables must live until the render.
   std::vector<vtkSmartPointer<vtkTable>> tables;
   for (std::size_t k = 0; k < series.size(); ++k) {
     tables.push_back(seriesTable(series[k]));
-    vtkPlot* plot = chart->AddPlot(series[k].lines ? vtkChart::LINE : vtkChart::POINTS);
+    // A line needs two points (VTK logs an error for one): a single point is drawn as a marker.
+    const bool line = series[k].lines && series[k].x.size() >= 2;
+    vtkPlot* plot = chart->AddPlot(line ? vtkChart::LINE : vtkChart::POINTS);
     plot->SetInputData(tables.back(), 0, 1);
     const auto& c = kPalette[k % kPalette.size()];
     plot->SetColor(c[0], c[1], c[2], 255);
-    plot->SetWidth(series[k].lines ? 2.5f : 1.0f);
-    if (auto* line = vtkPlotLine::SafeDownCast(plot)) line->SetMarkerStyle(vtkPlotPoints::CIRCLE);
+    plot->SetWidth(line ? 2.5f : 1.0f);
+    if (auto* l = vtkPlotLine::SafeDownCast(plot)) l->SetMarkerStyle(vtkPlotPoints::CIRCLE);
   }
 
   // Render, grab the back buffer, encode PNG in memory, write atomically.

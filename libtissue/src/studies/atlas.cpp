@@ -272,6 +272,8 @@ Result<AtlasResult> runAtlas(render::Renderer& renderer, const AtlasConfig& conf
       config.onProgress("frame " + frame.name + ": " + std::to_string(settings.size()) + " settings" +
                         (at.fromCache ? " (truth from the cache)" : ""));
     std::map<std::string, std::pair<double, Image8>> bestError;  // per method: rel RMS, error image
+    const std::size_t firstRow = result.rows.size();
+    std::vector<std::vector<Float3>> images;  // this frame's rows' linear radiance
     for (const Setting& s : settings) {
       const std::string method(render::shadingMethodName(s.method));
       auto ms = scene::organMethod(s.method, organ, *textures, s.choices);
@@ -301,6 +303,18 @@ Result<AtlasResult> runAtlas(render::Renderer& renderer, const AtlasConfig& conf
       auto it = bestError.find(method);
       if (it == bestError.end() || score.relRms < it->second.first)
         bestError[method] = {score.relRms, errorImage(truthLinear, *linear, T.covered, w, h)};
+      images.push_back(std::move(*linear));
+    }
+    // Each row against the frame's best, paired on the same truth.
+    std::size_t best = firstRow;
+    for (std::size_t k = firstRow; k < result.rows.size(); ++k)
+      if (result.rows[k].relRms < result.rows[best].relRms) best = k;
+    for (std::size_t k = firstRow; k < result.rows.size(); ++k) {
+      const ErrorDifference d =
+          errorDifference(truthLinear, T.stderrs, images[k - firstRow], images[best - firstRow], T.covered);
+      result.rows[k].squaredVsBest = d.squared;
+      result.rows[k].squaredVsBestStderr = d.squaredStderr;
+      result.rows[k].worseThanBest = d.bLower();
     }
     for (auto& [method, e] : bestError)
       report.images.push_back({"error_" + frame.name + "_" + method + ".png", std::move(e.second)});

@@ -95,6 +95,28 @@ double debiasedError(double relRms, double noiseRelRms) {
   return std::sqrt(std::max(0.0, relRms * relRms - noiseRelRms * noiseRelRms));
 }
 
+ErrorDifference errorDifference(std::span<const Float3> truth, std::span<const Float3> truthStderr,
+                                std::span<const Float3> a, std::span<const Float3> b,
+                                std::span<const std::uint8_t> mask) {
+  const std::size_t n = truth.size();
+  if (truthStderr.size() != n || a.size() != n || b.size() != n || mask.size() != n)
+    return {std::nan(""), std::nan("")};
+  double diff = 0.0, cross = 0.0, ref = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!mask[i]) continue;
+    const double t[3] = {truth[i].x, truth[i].y, truth[i].z},
+                 s[3] = {truthStderr[i].x, truthStderr[i].y, truthStderr[i].z},
+                 pa[3] = {a[i].x, a[i].y, a[i].z}, pb[3] = {b[i].x, b[i].y, b[i].z};
+    for (int c = 0; c < 3; ++c) {
+      diff += sq(pa[c] - t[c]) - sq(pb[c] - t[c]);
+      cross += sq(s[c]) * sq(pa[c] - pb[c]);
+      ref += sq(t[c]);
+    }
+  }
+  if (!(ref > 0.0)) return {std::nan(""), std::nan("")};
+  return {diff / ref, 2.0 * std::sqrt(cross) / ref};
+}
+
 Image8 errorImage(std::span<const Float3> truth, std::span<const Float3> method,
                   std::span<const std::uint8_t> mask, int width, int height, double scale) {
   Image8 img;

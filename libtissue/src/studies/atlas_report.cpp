@@ -184,7 +184,10 @@ void writeAtlasReport(AtlasResult& result, const AtlasConfig& config,
                     {"rel_rms_debiased", debiasedError(r.relRms, noiseOf[r.frame])},
                     {"psnr_db", r.psnrDb},
                     {"gain", r.gain},
-                    {"shape_rel_rms", r.shapeRelRms}});
+                    {"shape_rel_rms", r.shapeRelRms},
+                    {"squared_vs_best", r.squaredVsBest},
+                    {"squared_vs_best_stderr", r.squaredVsBestStderr},
+                    {"worse_than_best", r.worseThanBest}});
   nlohmann::json skips = nlohmann::json::array();
   for (const auto& [what, why] : skipped)
     skips.push_back({{"setting", what}, {"reason", why}});
@@ -201,9 +204,10 @@ void writeAtlasReport(AtlasResult& result, const AtlasConfig& config,
   report.add("atlas.json", result.output.json);
 
   // Per frame and method: the best setting, and whether it is on the frame's Pareto front.
-  Table best{{"frame", "method", "best setting", "ms", "rel RMS", "debiased", "PSNR dB", "gain",
-              "shape rel RMS", "on front", "truth noise"},
-             {}};
+  Table best{
+      {"frame", "method", "best setting", "ms", "rel RMS", "debiased", "PSNR dB", "gain", "shape rel RMS",
+       "on front", "truth noise", "E^2 - E_best^2 (+- 1 s.e.)", "vs the frame's best"},
+      {}};
   Table truths{
       {"frame", "spp", "truth s", "organ pixels", "noise rel RMS", "best method rel RMS", "noise / best"},
       {}};
@@ -231,10 +235,12 @@ void writeAtlasReport(AtlasResult& result, const AtlasConfig& config,
       bool methodOnFront = false;
       for (const AtlasRow* r : onFront)
         methodOnFront |= r->method == m;
-      best.rows.push_back({t.frame, m, b->setting, fixed(b->ms, 2), general(b->relRms, 3),
-                           general(debiasedError(b->relRms, t.noiseRelRms), 3), fixed(b->psnrDb, 2),
-                           general(b->gain, 3), general(b->shapeRelRms, 3), methodOnFront ? "yes" : "no",
-                           general(t.noiseRelRms, 3)});
+      best.rows.push_back(
+          {t.frame, m, b->setting, fixed(b->ms, 2), general(b->relRms, 3),
+           general(debiasedError(b->relRms, t.noiseRelRms), 3), fixed(b->psnrDb, 2), general(b->gain, 3),
+           general(b->shapeRelRms, 3), methodOnFront ? "yes" : "no", general(t.noiseRelRms, 3),
+           general(b->squaredVsBest, 3) + " +- " + general(b->squaredVsBestStderr, 2),
+           b->squaredVsBest == 0.0 ? "best" : (b->worseThanBest ? "worse" : "tie (within the noise)")});
     }
     truths.rows.push_back({t.frame, std::to_string(t.samplesPerPixel), fixed(1e-3 * t.cachedMs, 1),
                            std::to_string(t.organPixels), general(t.noiseRelRms, 3),
@@ -282,7 +288,11 @@ void writeAtlasReport(AtlasResult& result, const AtlasConfig& config,
         std::to_string(meeting) + " of " + std::to_string(result.truths.size()) +
         " frames have the truth's noise below a third of their best method's error.\n\n" + noiseNote +
         "![atlas](atlas.png)\n\n## The truth per frame\n\n" + markdownTable(truths) +
-        "\n## Best setting per frame and method (debiased: sqrt(max(0, err^2 - noise^2)))\n\n" +
+        "\n## Best setting per frame and method (debiased: sqrt(max(0, err^2 - noise^2)))\n\n"
+        "The last two columns compare each method's best setting with the frame's best row on the same "
+        "truth: the difference of their squared errors, whose standard error comes from the truth's "
+        "per-pixel noise and the two images' difference alone (the noise's own square cancels), so it "
+        "resolves differences far below the noise; \"worse\" is more than two standard errors.\n\n" +
         markdownTable(best) + "\n## Every row\n\n" + markdownTable(all);
   if (!skipped.empty()) {
     md += "\n## Skipped\n\n";

@@ -48,6 +48,26 @@ double truthNoiseRelRms(const truth::TruthImage& truth);
 /// The error once the truth's noise is taken out: sqrt(max(0, err^2 - noise^2)).
 double debiasedError(double relRms, double noiseRelRms);
 
+/// Two renderings A and B scored against one noisy truth T^ = T + n: which is closer, and can the
+/// truth tell? The difference of their squared relative errors,
+///   E_A^2 - E_B^2 = sum (|A - T^|^2 - |B - T^|^2) / sum |T^|^2,
+/// is unbiased by the noise (each squared error carries the same sum of n^2, which cancels), but
+/// carries its cross term -2 sum n (A - B) / sum |T^|^2, whose standard error is
+///   2 sqrt(sum sigma^2 |A - B|^2) / sum |T^|^2
+/// with sigma the truth's per-pixel standard error (per band). A difference is resolved when it is
+/// over `sigmas` of these. Over the pixels with mask != 0; sizes that differ: NaN.
+struct ErrorDifference {
+  double squared = 0.0;        ///< E_A^2 - E_B^2 (unitless, squared relative RMS)
+  double squaredStderr = 0.0;  ///< its standard error from the truth's noise
+  /// A is lower than B by more than `sigmas` standard errors.
+  bool aLower(double sigmas = 2.0) const { return squared < -sigmas * squaredStderr; }
+  /// B is lower than A by more than `sigmas` standard errors.
+  bool bLower(double sigmas = 2.0) const { return squared > sigmas * squaredStderr; }
+};
+ErrorDifference errorDifference(std::span<const Float3> truth, std::span<const Float3> truthStderr,
+                                std::span<const Float3> a, std::span<const Float3> b,
+                                std::span<const std::uint8_t> mask);
+
 /// The renderer's output transform of linear radiance (exposure, Reinhard, sRGB), 0..1.
 Float3 toneMap(Float3 radiance, float exposure = 1.0f);
 
@@ -86,6 +106,14 @@ struct AtlasRow {
   double psnrDb = 0.0;
   double gain = 0.0;         ///< AtlasScore::gain
   double shapeRelRms = 0.0;  ///< AtlasScore::shapeRelRms
+  /// Against the frame's lowest-error row, on the same truth (errorDifference): relRms^2 minus
+  /// its, and the standard error of that from the truth's noise. Paired, the comparison resolves
+  /// differences far below the truth's noise (its n^2 cancels; only the cross term with the two
+  /// images' difference is left).
+  double squaredVsBest = 0.0, squaredVsBestStderr = 0.0;
+  /// Worse than the frame's best by more than two of those standard errors (false: a tie the truth
+  /// cannot split, or the best itself).
+  bool worseThanBest = false;
 };
 
 /// One frame's truth.

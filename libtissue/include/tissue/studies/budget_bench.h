@@ -70,7 +70,14 @@ struct BudgetResult {
   double fixedBestRelRms = 0.0, fixedBestRelRmsDebiased = 0.0;  ///< NaN when no fixed setting fits
   std::string fixedBest;          ///< "method setting" of the best fixed setting that fits
   bool withinTenPercent = false;  ///< frameMsP95 <= 1.1 budgetMs
-  bool beatsFixed = false;        ///< relRms < fixedBestRelRms
+  /// The controller's squared rel RMS minus the best fixed setting's, and its standard error from
+  /// the truth's per-pixel noise (studies::errorDifference); NaN when no fixed setting fits.
+  double squaredDifference = 0.0, squaredDifferenceStderr = 0.0;
+  /// Lower than the best fixed setting by more than two of those standard errors (a difference the
+  /// truth can resolve); true when no fixed setting fits.
+  bool beatsFixed = false;
+  /// Higher by more than two standard errors; neither: a tie within the truth's resolution.
+  bool losesToFixed = false;
 };
 
 struct BudgetBenchResult {
