@@ -66,6 +66,11 @@ Result<SeparableMaterial> makeSeparableMaterial(const optics::ScatteringMaterial
   optics::KernelSettings settings;
   settings.taps = taps;
   settings.rank = rank;  // SVD rank or d'Eon Gaussians: one pair of blur passes each
+  // The surface's level is the optics' albedo and the blur only moves light: the rank-R SVD's
+  // truncation loses 7-8 % of the profile's energy on the liver, so scale it back to a gain of
+  // one (Freude eq. 5.12; docs/DECISIONS.md, "Every separable kernel keeps the energy"). The
+  // other models are normalised as they are built.
+  settings.normalizeEnergy = true;
   if (*kind == optics::KernelModel::Manual) {
     auto manual = optics::manualParameters(material.name);
     if (!manual) {
