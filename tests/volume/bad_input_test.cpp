@@ -58,6 +58,18 @@ TEST(VolumeBadInput, ZeroVolumeTetNamesTheElement) {
   expectError("flat.vtk", text, "tet element 1 has zero volume");
 }
 
+// VTK's legacy reader reads past its array when the CELLS size is below the cell count (a fuzzing
+// find that crashed); refused before VTK with the line named.
+TEST(VolumeBadInput, CellsSizeBelowTheCellCountIsRefusedBeforeVtk) {
+  // The fuzzer's header ("Version 3\x0e0") passes VTK but not tissue's own ASCII pre-check, so
+  // only the CELLS guard in front of VTK stands between the file and the crash.
+  std::string text = legacyVtk("4 0 1 2 3\n4 1 2 3 4\n", 21, 0, "10\n10\n");
+  text.replace(text.find("3.0"), 3,
+               "3\x0e"
+               "0");
+  expectError("cells_size.vtk", text, "CELLS");
+}
+
 TEST(VolumeBadInput, NoTetsIsAnError) {
   expectError("notets.vtk", legacyVtk("3 0 1 2\n3 1 2 3\n", 2, 8, "5\n5\n"),
               "no tetrahedra (found 2 other cells)");
