@@ -58,7 +58,7 @@ float thicknessMm(int i, vec3 P) {
   vec3 c = shadowCoordinates(i, P);
   if (c.z <= 0.0 || any(lessThan(c.xy, vec2(0.0))) || any(greaterThan(c.xy, vec2(1.0)))) return 0.0;
   vec2 texel = 1.0 / vec2(textureSize(u_shadowMaps, 0).xy);
-  float nearest = texture(u_shadowMaps, vec3(c.xy, float(layer))).r;
+  float nearest = 3.0e38;  // the loop's centre tap is P's own texel
   for (int y = -1; y <= 1; ++y)
     for (int x = -1; x <= 1; ++x)
       nearest = min(nearest, texture(u_shadowMaps, vec3(c.xy + vec2(x, y) * texel, float(layer))).r);

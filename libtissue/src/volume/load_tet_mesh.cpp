@@ -291,10 +291,15 @@ Result<void> checkLegacyVtkCounts(const std::filesystem::path& path) {
   if (ec) return {};
   std::ifstream in(path, std::ios::binary);
   std::string line;
-  bool ascii = false;
+  bool ascii = false, formatRead = false;
   for (int k = 0; k < 8 && std::getline(in, line); ++k) {
-    if (k == 2) {  // VTK lower-cases the line first: "ASCIi" is a text file to it (the VTK fuzzer)
-      std::string lower = line.substr(0, 5);
+    // The format keyword is the first word after the title: VTK skips blank lines to reach it
+    // ("Version 3\x0e0", a binary title, a blank line, then "ASCII": the VTK fuzzer's crash,
+    // which went past this check when it looked at the third line only).
+    if (k >= 2 && !formatRead && line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    if (k >= 2 && !formatRead) {  // VTK lower-cases it first: "ASCIi" is a text file to it
+      formatRead = true;
+      std::string lower = line.substr(line.find_first_not_of(" \t\r"), 5);
       std::transform(lower.begin(), lower.end(), lower.begin(),
                      [](unsigned char c) { return char(std::tolower(c)); });
       ascii = lower == "ascii";

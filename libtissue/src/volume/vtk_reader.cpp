@@ -18,7 +18,6 @@
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <system_error>
@@ -170,34 +169,7 @@ Result<RawVolume> readWith(Reader& reader, const std::filesystem::path& path, co
 
 }  // namespace
 
-namespace {
-// VTK 9's legacy reader trusts the classic "CELLS n size" header: with size < n (each cell needs
-// at least its count) it reads past the array it allocated (a fuzzing find: "CELLS 21 0"
-// crashed inside std::istream >> int). Checked here first; the newer "CELLS offsets
-// connectivity" form is followed by an OFFSETS line and is left to VTK.
-Result<void> checkLegacyCells(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("CELLS", 0) != 0) continue;
-    std::istringstream fields(line.substr(5));
-    long long n = -1, size = -1;
-    fields >> n >> size;
-    std::string next;
-    while (std::getline(in, next) && next.find_first_not_of(" \t\r") == std::string::npos) {
-    }
-    const bool newForm = next.rfind("OFFSETS", 0) == 0;
-    if (!fields || n < 0 || size < 0 || (!newForm && size < n))
-      return Error{path.string() + ": its CELLS line '" + line.substr(0, 60) +
-                   "' needs a cell count and a size of at least one entry per cell; check the file"};
-    return {};
-  }
-  return {};
-}
-}  // namespace
-
 Result<RawVolume> readLegacyVtk(const std::filesystem::path& path) {
-  if (auto ok = checkLegacyCells(path); !ok) return ok.error();
   vtkNew<vtkUnstructuredGridReader> reader;
   return readWith(*reader, path, "a legacy VTK unstructured grid (DATASET UNSTRUCTURED_GRID)");
 }
