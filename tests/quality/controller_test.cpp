@@ -164,6 +164,78 @@ TEST(QualityController, HysteresisHoldsThePlanUnderNoisyCosts) {
   EXPECT_EQ(loose[0].setting, "50");
 }
 
+// Frames as runFrames (4% noise, no swing), where an object's first frame with a new option
+// costs `spikeMs` more (its pass and the frame): the one-off cost of a switch. Returns each
+// frame's measured ms.
+std::vector<double> runSpiked(QualityController& c, const std::vector<ObjectView>& objs, double budget,
+                              int frames, std::mt19937& rng, double spikeMs) {
+  const QualityTable& t = c.table();
+  std::normal_distribution<double> noise(1.0, 0.04);
+  std::vector<double> out;
+  for (int f = 0; f < frames; ++f) {
+    const auto& ch = c.update(objs, kScreenPx, budget);
+    std::vector<CostSample> samples;
+    double frame = t.frameOverheadMs;
+    for (std::size_t i = 0; i < ch.size(); ++i) {
+      const QualityOption& o = t.options[std::size_t(ch[i].option)];
+      samples.push_back(
+          {i, (o.fixedMs + o.msPerPx * objs[i].footprintPx) * noise(rng) + (ch[i].switched ? spikeMs : 0.0)});
+      frame += samples.back().ms;
+    }
+    c.observe(samples, frame);
+    out.push_back(frame);
+  }
+  return out;
+}
+
+TEST(QualityController, SwitchSpikesAreLearnedApartAndTheSwitchWaitsUntilItFits) {
+  ControllerSettings s;
+  s.holdFrames = 10;
+  const QualityTable t = table();
+  // The close-up alternates between two footprints every 40 frames, so the best plan under the
+  // budget alternates too: each change is a switch with a one-off spike.
+  auto scenario = [&](QualityController& c, double spikeMs, std::vector<double>& frames) {
+    std::mt19937 rng(5);
+    auto objs = objects();
+    for (int phase = 0; phase < 10; ++phase) {
+      objs[0].footprintPx = phase % 2 ? 20000.0 : 40000.0;
+      const auto ms = runSpiked(c, objs, 14.0, 40, rng, spikeMs);
+      frames.insert(frames.end(), ms.begin(), ms.end());
+    }
+  };
+  // A spike that fits beside the cheaper plan: the plan follows the footprint, the spikes are
+  // learned as the switch cost (the steady costs stay the table's), and nothing oscillates: one
+  // change per phase at most.
+  QualityController small(t, s);
+  std::vector<double> smallFrames;
+  scenario(small, 0.15, smallFrames);
+  EXPECT_GE(small.plansChanged(), 5) << small.switchesDeferred() << " deferred";
+  EXPECT_LE(small.plansChanged(), 11);
+  for (std::size_t o = 0; o < t.options.size(); ++o) {
+    const CostModel& m = small.costs()[o];
+    if (m.samples == 0) continue;
+    const double truth = t.options[o].fixedMs + t.options[o].msPerPx * 20000.0;
+    EXPECT_NEAR(m.predictMs(20000.0), truth, 0.1 * truth)
+        << t.options[o].method << " " << t.options[o].setting;
+  }
+  EXPECT_NEAR(small.overheadMs(), t.frameOverheadMs, 0.2);
+  double learned = 0.0;
+  for (double v : small.switchCostsMs())
+    learned = std::max(learned, v);
+  EXPECT_GT(learned, 0.05);
+  EXPECT_LT(learned, 0.6);
+  // A spike the budget cannot hold: once learned, the plan waits instead of breaking the budget
+  // at every change (the first switch to each option teaches its cost).
+  QualityController big(t, s);
+  std::vector<double> bigFrames;
+  scenario(big, 40.0, bigFrames);
+  EXPECT_GT(big.switchesDeferred(), 0);
+  int over = 0;
+  for (std::size_t f = 1; f < bigFrames.size(); ++f)
+    over += bigFrames[f] > 14.0 * 1.1 ? 1 : 0;
+  EXPECT_LE(over, 3) << "frames over the budget: one per option first switched to";
+}
+
 TEST(QualityController, LearnedCostConvergesToTheMeasuredCost) {
   // The prior is 3x off; the machine's cost is 1.5 ms + 4e-4 ms/px.
   CostModel m = costModelOf(option("separable", "x", 0.3, 0.5, 1.2e-3));

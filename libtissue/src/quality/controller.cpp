@@ -197,6 +197,8 @@ QualityController::QualityController(QualityTable table, ControllerSettings sett
   for (const QualityOption& o : m_table.options)
     m_costs.push_back(costModelOf(o));
   m_overheadMs = m_table.frameOverheadMs;
+  m_switchMs.assign(m_table.options.size(), 0.0);
+  m_switchSamples.assign(m_table.options.size(), 0);
 }
 
 const std::vector<ObjectChoice>& QualityController::update(std::span<const ObjectView> objects,
@@ -219,11 +221,23 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
     held = evaluatePlan(m_table, m_costs, m_overheadMs, objects, screenPx, m_plan.option, budgetMs, s);
     const bool over =
         held.predictedMs > budgetMs * (1.0 + s.overBudgetTolerance) && best.predictedMs < held.predictedMs;
-    const bool gains =
-        m_age >= s.holdFrames && best.expectedError < held.expectedError * (1.0 - s.gainMargin);
+    bool gains = m_age >= s.holdFrames && best.expectedError < held.expectedError * (1.0 - s.gainMargin);
+    if (gains) {
+      // The switch frame itself must fit: the new plan plus the one-off costs of the options it
+      // gives objects anew (a held plan that fits is no reason to break the budget once).
+      double switchMs = 0.0;
+      for (std::size_t i = 0; i < objects.size(); ++i)
+        if (best.option[i] != m_plan.option[i]) switchMs += m_switchMs[std::size_t(best.option[i])];
+      if (best.predictedMs + switchMs > budgetMs) {
+        gains = false;
+        ++m_deferred;
+      }
+    }
     replace = over || gains;
   }
   ++m_age;
+  ++m_updates;
+  const std::vector<int> before = m_plan.option;
   if (replace) {
     if (m_plan.option != best.option) ++m_changes;
     m_plan = best;
@@ -245,18 +259,36 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
     c.expectedRelRms = opt.relRms[std::size_t(c.view)];
     c.fallback = objects[i].footprintPx < s.minFootprintPx;
     c.mesh = meshWorkOf(opt.method, objects[i].hasNormalMap);
+    c.switched = before.size() == objects.size() && before[i] != o;
     m_choices.push_back(std::move(c));
   }
   return m_choices;
 }
 
 void QualityController::observe(std::span<const CostSample> samples, double frameMs) {
+  if (m_updates <= 1) return;  // the first frame builds everything: no steady cost
+  std::vector<int> switchedTo;
+  for (const ObjectChoice& c : m_choices)
+    if (c.switched) switchedTo.push_back(c.option);
   double objectsMs = 0.0;
   for (const CostSample& c : samples) {
-    if (c.object >= m_choices.size()) continue;
+    if (c.object >= m_choices.size() || m_choices[c.object].switched) continue;
     const int o = m_choices[c.object].option;
     observeCost(m_costs[std::size_t(o)], m_lastObjects[c.object].footprintPx, c.ms, m_settings.learningRate);
     objectsMs += c.ms;
+  }
+  if (!switchedTo.empty()) {
+    // The excess over the plan's steady prediction, shared among the options switched to; a
+    // running mean until 1 / rate samples, then an EMA (as observeCost).
+    if (!std::isfinite(frameMs)) return;
+    const double excess = std::max(0.0, frameMs - m_plan.predictedMs) / double(switchedTo.size());
+    for (int o : switchedTo) {
+      int& n = m_switchSamples[std::size_t(o)];
+      const double a = std::clamp(std::max(m_settings.learningRate, 1.0 / double(n + 1)), 0.0, 1.0);
+      m_switchMs[std::size_t(o)] = (1 - a) * m_switchMs[std::size_t(o)] + a * excess;
+      ++n;
+    }
+    return;
   }
   if (std::isfinite(frameMs)) {
     const double a = std::clamp(m_settings.learningRate, 0.0, 1.0);

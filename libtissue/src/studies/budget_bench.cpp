@@ -86,11 +86,17 @@ struct Bench {
       const std::size_t back = std::size_t(total - 1 - f) % (2 * n - 2);
       const std::size_t k = back < n ? n - 1 - back : back - (n - 1);
       if (auto ok = scene.setPositions(0, shapes[k]); !ok) return ok.error();
+      const int plansBefore = scene.qualityController() ? scene.qualityController()->plansChanged() : 0;
       const Stopwatch watch;
       auto image = scene.renderImage(config.width, config.height);
       if (!image) return image.error();
       const double frameMs = watch.elapsedMs();
-      if (f >= config.warmupFrames) ms.push_back(frameMs);
+      if (f == 0) r.firstFrameMs = frameMs;
+      if (f >= config.warmupFrames) {
+        if (scene.qualityController() && scene.qualityController()->plansChanged() != plansBefore)
+          r.planChangeFrames.push_back(int(ms.size()));
+        ms.push_back(frameMs);
+      }
       // Five frames in a row over the cap (a shared machine's stalls come one at a time); the
       // first frame warms up (shaders, maps).
       slow = f > 0 && frameMs > abortMs ? slow + 1 : 0;
@@ -103,6 +109,7 @@ struct Bench {
     }
     r.frameMsMedian = percentile(ms, 0.5);
     r.frameMsP95 = percentile(ms, 0.95);
+    r.frameMs = ms;
     auto linear = lastFrameRadiance(scene.renderer());
     if (!linear) return linear.error();
     const AtlasScore score = scoreAgainstTruth(truthLinear, *linear, truth->covered);
@@ -147,6 +154,7 @@ std::string jsonOf(const BudgetBenchResult& b, const BudgetBenchConfig& config) 
                          {"setting", f.setting},
                          {"frame_ms_median", f.frameMsMedian},
                          {"frame_ms_p95", f.frameMsP95},
+                         {"first_frame_ms", f.firstFrameMs},
                          {"rel_rms", f.relRms},
                          {"rel_rms_debiased", f.relRmsDebiased},
                          {"rel_rms_off_silhouettes", f.interiorRelRms},
@@ -167,6 +175,8 @@ std::string jsonOf(const BudgetBenchResult& b, const BudgetBenchConfig& config) 
                          {"tangents", c.choices[i].mesh.tangents}});
     runs.push_back({{"budget_ms", c.budgetMs},
                     {"plan_changes", c.planChanges},
+                    {"frame_ms", c.frameMs},
+                    {"plan_change_frames", c.planChangeFrames},
                     {"rel_rms_off_silhouettes", c.interiorRelRms},
                     {"organ_rel_rms", c.organRelRms},
                     {"choices", choices}});
@@ -430,7 +440,7 @@ Result<BudgetBenchResult> runBudgetBench(const BudgetBenchConfig& config) {
     say("fixed " + option.method + " " + option.setting + ": median " + fixed(r->frameMsMedian, 1) +
         " ms, p95 " + fixed(r->frameMsP95, 1) + " ms, rel RMS " + fixed(r->relRms) +
         ", off the silhouettes " + fixed(r->interiorRelRms) + ", gain " + fixed(r->gain) + ", shape " +
-        fixed(r->shapeRelRms));
+        fixed(r->shapeRelRms) + ", first frame " + fixed(r->firstFrameMs, 1) + " ms");
     // Each method's best setting: its frame and error image.
     if (!r->tooSlow) {
       auto& [bestRelRms, frameImage, error] = bestOfMethod[option.method];

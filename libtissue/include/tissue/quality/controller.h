@@ -105,6 +105,10 @@ struct ObjectChoice {
   ViewClass view = ViewClass::Rest;
   bool fallback = false;  ///< below the footprint threshold
   MeshWork mesh;
+  /// The option is new to the object this frame: its first frame pays a one-off cost (the mesh
+  /// work the old method skipped caught up, a method's first maps) that the controller learns
+  /// apart from the steady cost (QualityController::switchCostsMs).
+  bool switched = false;
 };
 
 /// One object's measured cost this frame.
@@ -122,7 +126,12 @@ class QualityController {
   const std::vector<ObjectChoice>& update(std::span<const ObjectView> objects, double screenPx,
                                           double budgetMs);
   /// The measured costs of the frame that used the last update's choice: each object's share of
-  /// its passes, and the whole frame (ms), whose rest is the overhead.
+  /// its passes, and the whole frame (ms), whose rest is the overhead. On a frame where objects
+  /// switched option, their samples and the overhead are not learned from: what the frame took
+  /// beyond the plan's prediction is the switched options' one-off cost (an EMA per option),
+  /// which a later switch must fit in the budget beside the new plan. Without this, a switch's
+  /// spike read as steady cost sends the plan back at once and the controller oscillates. The
+  /// first frame (everything new) teaches nothing.
   void observe(std::span<const CostSample> samples, double frameMs);
 
   const std::vector<ObjectChoice>& choices() const { return m_choices; }
@@ -131,6 +140,11 @@ class QualityController {
   std::span<const CostModel> costs() const { return m_costs; }
   double overheadMs() const { return m_overheadMs; }
   int plansChanged() const { return m_changes; }  ///< how often the plan changed
+  /// Per table option, ms: the learned one-off cost of an object's first frame with it (0 until
+  /// a switch to it was measured).
+  std::span<const double> switchCostsMs() const { return m_switchMs; }
+  /// Plan changes that would have gained but waited because the switch frame would not fit.
+  int switchesDeferred() const { return m_deferred; }
   const ControllerSettings& settings() const { return m_settings; }
 
  private:
@@ -144,6 +158,10 @@ class QualityController {
   double m_budgetMs = 0.0;  ///< ms, of the last update
   int m_age = 0;
   int m_changes = 0;
+  int m_deferred = 0;
+  int m_updates = 0;
+  std::vector<double> m_switchMs;  ///< per option, ms (switchCostsMs)
+  std::vector<int> m_switchSamples;
 };
 
 }  // namespace tissue::quality

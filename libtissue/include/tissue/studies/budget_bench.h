@@ -56,7 +56,10 @@ struct BudgetRun {
   double relRms = 0.0, relRmsDebiased = 0.0;     ///< the last frame against the truth
   std::vector<scene::BudgetChoice> choices;      ///< the controller's, at the last frame
   int planChanges = 0;                           ///< the controller's plans during the run
-  std::vector<double> organRelRms;               ///< per organ (placements' order): rel RMS over its pixels
+  std::vector<double> frameMs;                   ///< each timed frame, ms
+  double firstFrameMs = 0.0;  ///< the run's first frame, ms: the setting's first use (set-up, shader builds)
+  std::vector<int> planChangeFrames;     ///< timed frames (index into frameMs) the plan changed in
+  std::vector<double> organRelRms;       ///< per organ (placements' order): rel RMS over its pixels
   double interiorRelRms = 0.0;           ///< rel RMS over pixels off every silhouette (BudgetBenchResult)
   double gain = 0.0, shapeRelRms = 0.0;  ///< AtlasScore's: the overall level, the error once matched
   bool tooSlow = false;  ///< a fixed setting stopped at a frame over maxFixedFrameMs (not scored)
