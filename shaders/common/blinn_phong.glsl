@@ -13,9 +13,11 @@ vec3 blinnPhong(vec3 N, vec3 L, vec3 V, vec3 albedo, float specular, float shini
 
 // Wrap lighting (Green 2004, GPU Gems ch. 16): the diffuse is max(0, (N.L + w) / (1 + w)),
 // reaching past the terminator as scattered light does; the specular keeps the plain N.L.
-// w = 0 is blinnPhong().
-vec3 blinnPhongWrap(vec3 N, vec3 L, vec3 V, vec3 albedo, float specular, float shininess, float wrap) {
+// The diffuse leaves through the outer surface with `exitWeight` (common/specular.glsl
+// boundaryWeight at the eye's cosine). w = 0 and exitWeight = 1 is blinnPhong().
+vec3 blinnPhongWrap(vec3 N, vec3 L, vec3 V, vec3 albedo, float specular, float shininess, float wrap,
+                    float exitWeight) {
   float NdotL = dot(N, L);
   float wrapped = max((NdotL + wrap) / (1.0 + wrap), 0.0);
-  return albedo * wrapped + vec3(surfaceSpecular(N, L, V, specular, shininess));
+  return albedo * wrapped * exitWeight + vec3(surfaceSpecular(N, L, V, specular, shininess));
 }

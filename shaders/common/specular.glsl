@@ -20,6 +20,22 @@ float dielectricFresnel(float c, float n) {
   return 0.5 * a * a * (1.0 + b * b);
 }
 
+// The weight of diffuse light leaving through the outer surface at cosine mu = N.V, relative to
+// leaving along the normal: T(mu) / T(1), with T = 1 - F the dielectric's transmittance (eq. 22;
+// `specular` is F0 = F(1); 0: no boundary, weight 1). Light scattered inside reaches the eye
+// through the boundary at the eye's angle (over the geometric normal: the macro surface it crosses),
+// so an oblique view sees less of it than Lambert does
+// (Jensen et al. 2001's F_t(eta, w_o); the ray march's T(N.V)/T0, raymarch/raymarch.frag).
+// Against the path-traced truth (docs/DECISIONS.md, eighth session) it lowered every painted
+// method's error on every lit atlas frame and on the budget bench; the same weight at the
+// light's entry, T(N.L)/T0, helped two atlas frames and hurt the grazing one and the bench (at
+// oblique incidence the shallower path also returns more light, which that weight alone omits).
+float boundaryWeight(float mu, float specular) {
+  if (specular <= 0.0) return 1.0;
+  float r = sqrt(min(specular, 0.99));
+  return (1.0 - dielectricFresnel(clamp(mu, 0.0, 1.0), (1.0 + r) / (1.0 - r))) / (1.0 - specular);
+}
+
 // Walter et al. 2007 eq. 27.
 float smithG1Beckmann(float cosine, float alpha) {
   float t = sqrt(max(0.0, 1.0 - cosine * cosine)) / cosine;

@@ -14,10 +14,13 @@ void main() {
   vec3 Ng = geometricNormal();
   vec3 albedo = surfaceAlbedo();
   vec3 V = normalize(u_cameraPosition - v_worldPosition);
-  vec3 color = u_ambient * albedo;
+  // The diffuse leaves through the outer surface at the eye's angle (boundaryWeight), over the
+  // geometric normal: a normal map's detail turns N away from the eye near the outline.
+  float exitWeight = boundaryWeight(dot(Ng, V), u_specular);
+  vec3 color = u_ambient * albedo * exitWeight;
   for (int i = 0; i < u_lightCount; ++i) {
     vec3 L = lightDirection(i, v_worldPosition);
-    color += blinnPhongWrap(N, L, V, albedo, u_specular, u_shininess, u_wrap) * u_lightRadiance[i] *
+    color += blinnPhongWrap(N, L, V, albedo, u_specular, u_shininess, u_wrap, exitWeight) * u_lightRadiance[i] *
              shadowFactor(i, v_worldPosition, Ng);
   }
   o_radiance = vec4(color, 1.0);

@@ -109,7 +109,8 @@ void main() {
   float opacity = u_hasOpacityMap == 1 ? texture(u_opacityMap, v_uv).r : u_opacity;
   // Eq. 19 and §2.2.3: s = see-through x N.V (saturate), x (1 - s) + y s.
   float see = (1.0 - clamp(opacity, 0.0, 1.0)) * clamp(dot(N, V), 0.0, 1.0);
-  vec3 color = mix(albedo * outerIrradiance, inner, see) + specular;
+  // The diffuse leaves through the boundary (common/specular.glsl boundaryWeight).
+  vec3 color = mix(albedo * outerIrradiance, inner, see) * boundaryWeight(dot(Ng, V), u_specular) + specular;
   o_radiance = vec4(color, 1.0);
   o_diffuse = vec4(0.0, 0.0, 0.0, u_objectId);
   o_position = surfacePosition();

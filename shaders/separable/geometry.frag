@@ -27,6 +27,9 @@ void main() {
     specular += surfaceSpecular(N, L, V, u_specular, u_shininess) * E;
     diffuse += transmittedLight(i, v_worldPosition, Ng, L) * albedo;
   }
+  // The light leaves through the boundary (common/specular.glsl boundaryWeight) at the pixel it
+  // entered: the blur radius (mm) is far below the surface's radius of curvature.
+  diffuse *= boundaryWeight(dot(Ng, V), u_specular);  // Ng: as lit/lit.frag
   o_radiance = vec4(specular, 1.0);
   o_diffuse = vec4(diffuse, u_objectId);
   o_position = surfacePosition();

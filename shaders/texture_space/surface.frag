@@ -28,6 +28,10 @@ void main() {
                 shadowFactor(i, v_worldPosition, Ng);
   }
   o_radiance = vec4(specular, 1.0);
-  o_diffuse = vec4(diffused * pow(max(albedo, vec3(1e-6)), vec3(1.0 - u_albedoPreScatter)), u_objectId);
+  // The diffused light leaves through the boundary here, where it exits (common/specular.glsl
+  // boundaryWeight).
+  o_diffuse = vec4(diffused * pow(max(albedo, vec3(1e-6)), vec3(1.0 - u_albedoPreScatter)) *
+                       boundaryWeight(dot(Ng, V), u_specular),  // Ng: as lit/lit.frag
+                   u_objectId);
   o_position = surfacePosition();
 }

@@ -198,13 +198,42 @@ QualityController::QualityController(QualityTable table, ControllerSettings sett
     m_costs.push_back(costModelOf(o));
   m_overheadMs = m_table.frameOverheadMs;
   m_switchMs.assign(m_table.options.size(), 0.0);
+  for (const QualityOption& o : m_table.options)
+    if (std::find(m_methods.begin(), m_methods.end(), o.method) == m_methods.end())
+      m_methods.push_back(o.method);
+  m_methodRatio.assign(m_methods.size(), 1.0);
+  m_methodRatioSamples.assign(m_methods.size(), 0);
   m_switchSamples.assign(m_table.options.size(), 0);
+}
+
+std::vector<CostModel> QualityController::planningCosts() const {
+  std::vector<CostModel> out = m_costs;
+  for (std::size_t o = 0; o < out.size(); ++o) {
+    if (out[o].samples > 0) continue;
+    const auto m = std::size_t(std::find(m_methods.begin(), m_methods.end(), m_table.options[o].method) -
+                               m_methods.begin());
+    const double ratio = m_methodRatioSamples[m] > 0 ? m_methodRatio[m]
+                         : m_allRatioSamples > 0     ? m_allRatio
+                                                     : 1.0;
+    const double k = ratio * std::max(1.0, m_settings.unmeasuredCostFactor);
+    out[o].fixedMs *= k;
+    out[o].msPerPx *= k;
+  }
+  return out;
+}
+
+double QualityController::planningBudgetMs(double budgetMs) const {
+  return budgetMs / (1.0 + std::max(0.0, m_settings.tailZ) * frameSpread());
 }
 
 const std::vector<ObjectChoice>& QualityController::update(std::span<const ObjectView> objects,
                                                            double screenPx, double budgetMs) {
   const ControllerSettings& s = m_settings;
-  const Plan best = choosePlan(m_table, m_costs, m_overheadMs, objects, screenPx, budgetMs, s);
+  // Plans are made for the tail (ControllerSettings::tailZ): a plan whose mean fits the budget
+  // puts half its frames over it.
+  const double tail = 1.0 + std::max(0.0, s.tailZ) * frameSpread();
+  const std::vector<CostModel> costs = planningCosts();
+  const Plan best = choosePlan(m_table, costs, m_overheadMs, objects, screenPx, budgetMs / tail, s);
   // A new budget or a new set of objects: the held plan was made for something else.
   bool replace = m_plan.option.size() != objects.size() || budgetMs != m_budgetMs;
   m_budgetMs = budgetMs;
@@ -218,9 +247,9 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
   }
   Plan held;
   if (!replace) {
-    held = evaluatePlan(m_table, m_costs, m_overheadMs, objects, screenPx, m_plan.option, budgetMs, s);
-    const bool over =
-        held.predictedMs > budgetMs * (1.0 + s.overBudgetTolerance) && best.predictedMs < held.predictedMs;
+    held = evaluatePlan(m_table, costs, m_overheadMs, objects, screenPx, m_plan.option, budgetMs / tail, s);
+    const bool over = held.predictedMs * tail > budgetMs * (1.0 + s.overBudgetTolerance) &&
+                      best.predictedMs < held.predictedMs;
     bool gains = m_age >= s.holdFrames && best.expectedError < held.expectedError * (1.0 - s.gainMargin);
     if (gains) {
       // The switch frame itself must fit: the new plan plus the one-off costs of the options it
@@ -239,7 +268,11 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
   ++m_updates;
   const std::vector<int> before = m_plan.option;
   if (replace) {
-    if (m_plan.option != best.option) ++m_changes;
+    if (m_plan.option != best.option) {
+      ++m_changes;
+      m_meanSamples = 0;  // another plan: another mean frame time
+      m_frameMean = 0.0;
+    }
     m_plan = best;
     m_age = 0;
   } else {
@@ -254,7 +287,7 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
     c.option = o;
     c.method = opt.method;
     c.setting = opt.setting;
-    c.predictedMs = costOf(m_costs, o, objects[i]);
+    c.predictedMs = costOf(costs, o, objects[i]);
     c.view = viewClassOf(objects[i], screenPx, s);
     c.expectedRelRms = opt.relRms[std::size_t(c.view)];
     c.fallback = objects[i].footprintPx < s.minFootprintPx;
@@ -274,8 +307,24 @@ void QualityController::observe(std::span<const CostSample> samples, double fram
   for (const CostSample& c : samples) {
     if (c.object >= m_choices.size() || m_choices[c.object].switched) continue;
     const int o = m_choices[c.object].option;
-    observeCost(m_costs[std::size_t(o)], m_lastObjects[c.object].footprintPx, c.ms, m_settings.learningRate);
+    const double px = m_lastObjects[c.object].footprintPx;
+    observeCost(m_costs[std::size_t(o)], px, c.ms, m_settings.learningRate);
     objectsMs += c.ms;
+    // Measured over prior (planningCosts), per method and over all.
+    const QualityOption& opt = m_table.options[std::size_t(o)];
+    const double prior = opt.fixedMs + opt.msPerPx * std::max(0.0, px);
+    if (prior > 1e-9 && std::isfinite(c.ms)) {
+      const double ratio = std::clamp(c.ms / prior, 0.05, 20.0);
+      const auto m =
+          std::size_t(std::find(m_methods.begin(), m_methods.end(), opt.method) - m_methods.begin());
+      auto ema = [&](double& v, int& n) {
+        const double a = std::clamp(std::max(m_settings.learningRate, 1.0 / double(n + 1)), 0.0, 1.0);
+        v = (1 - a) * v + a * ratio;
+        ++n;
+      };
+      ema(m_methodRatio[m], m_methodRatioSamples[m]);
+      ema(m_allRatio, m_allRatioSamples);
+    }
   }
   if (!switchedTo.empty()) {
     // The excess over the plan's steady prediction, shared among the options switched to; a
@@ -289,6 +338,20 @@ void QualityController::observe(std::span<const CostSample> samples, double fram
       ++n;
     }
     return;
+  }
+  if (std::isfinite(frameMs) && frameMs > 0.0) {
+    // The frames' spread about their running mean under this plan (frameSpread); both a
+    // running mean until 1 / rate samples, then an EMA.
+    const double rate = m_settings.learningRate;
+    if (m_meanSamples > 0) {
+      const double r = (frameMs - m_frameMean) / m_frameMean;
+      const double a = std::clamp(std::max(rate, 1.0 / double(m_frameSamples + 1)), 0.0, 1.0);
+      m_frameVar = (1 - a) * m_frameVar + a * std::min(r * r, 1.0);
+      ++m_frameSamples;
+    }
+    const double b = std::clamp(std::max(rate, 1.0 / double(m_meanSamples + 1)), 0.0, 1.0);
+    m_frameMean = (1 - b) * m_frameMean + b * frameMs;
+    ++m_meanSamples;
   }
   if (std::isfinite(frameMs)) {
     const double a = std::clamp(m_settings.learningRate, 0.0, 1.0);

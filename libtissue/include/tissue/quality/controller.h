@@ -10,6 +10,7 @@
 /// and more budget never gives a higher expected error. Objects below a footprint fall back to
 /// lit with a wrap term (Unreal Substrate's Wrap tier). GL-free. Units: ms, px, mm, degrees.
 
+#include <cmath>
 #include <cstddef>
 #include <span>
 #include <string>
@@ -33,11 +34,19 @@ struct ObjectView {
 
 /// The controller's settings (plain struct with defaults).
 struct ControllerSettings {
-  double minFootprintPx = 400.0;     ///< px; below: lit with wrap (about 20 x 20 pixels)
-  double closeUpFraction = 0.25;     ///< of the screen's pixels covered: the close-up class
-  double closeUpDistanceMm = 0.0;    ///< mm; nearer than this is close-up too (0: off)
-  double grazingDeg = 72.0;          ///< degrees; a view angle above it is the grazing class
-  double headroom = 0.05;            ///< plan to budget x (1 - headroom): measurement noise
+  double minFootprintPx = 400.0;   ///< px; below: lit with wrap (about 20 x 20 pixels)
+  double closeUpFraction = 0.25;   ///< of the screen's pixels covered: the close-up class
+  double closeUpDistanceMm = 0.0;  ///< mm; nearer than this is close-up too (0: off)
+  double grazingDeg = 72.0;        ///< degrees; a view angle above it is the grazing class
+  double headroom = 0.05;          ///< plan to budget x (1 - headroom): measurement noise
+  /// The frame time's tail the budget is for: plans are made for budget / (1 + z cv), cv the
+  /// learned relative spread of measured frames about their prediction, so that the frames up to
+  /// this normal quantile fit (1.645: the 95th percentile; 0: plan the mean).
+  double tailZ = 1.645;
+  /// An option never measured is planned at this many times its calibrated prior
+  /// (QualityController::planningCosts): its cost is uncertain, and a frame over the budget costs
+  /// more than a gain missed for a while (1: trust the calibrated prior).
+  double unmeasuredCostFactor = 1.5;
   double costGridMs = 0.02;          ///< ms, the knapsack's cost resolution (costs round up)
   int holdFrames = 30;               ///< a new plan at most every N frames (hysteresis)
   double gainMargin = 0.1;           ///< a new plan only if its expected error is this much lower
@@ -138,7 +147,20 @@ class QualityController {
   const Plan& plan() const { return m_plan; }
   const QualityTable& table() const { return m_table; }
   std::span<const CostModel> costs() const { return m_costs; }
+  /// The costs plans are made with: the learned ones, and for an option never measured its
+  /// table prior times the measured-over-prior ratio of its method's measured options (of all
+  /// measured options while its method has none), times ControllerSettings::unmeasuredCostFactor.
+  /// The table's costs come from another machine
+  /// and scene; a setting's cost is mostly its method's passes, so one measured setting
+  /// calibrates its siblings before each of them is tried at the price of a frame over budget.
+  std::vector<CostModel> planningCosts() const;
   double overheadMs() const { return m_overheadMs; }
+  /// The learned relative spread of frame times (an RMS about their running mean under one
+  /// plan, over that mean; unitless). About the mean, not the prediction: while the costs
+  /// converge from the table's priors the prediction's bias is not noise.
+  double frameSpread() const { return std::sqrt(m_frameVar); }
+  /// The budget plans are made for: budgetMs / (1 + tailZ x frameSpread()), ms.
+  double planningBudgetMs(double budgetMs) const;
   int plansChanged() const { return m_changes; }  ///< how often the plan changed
   /// Per table option, ms: the learned one-off cost of an object's first frame with it (0 until
   /// a switch to it was measured).
@@ -159,8 +181,17 @@ class QualityController {
   int m_age = 0;
   int m_changes = 0;
   int m_deferred = 0;
+  double m_frameVar = 0.0;   ///< EMA of ((frame - mean) / mean)^2
+  double m_frameMean = 0.0;  ///< ms, running mean of the frames under the held plan
+  int m_frameSamples = 0, m_meanSamples = 0;
   int m_updates = 0;
   std::vector<double> m_switchMs;  ///< per option, ms (switchCostsMs)
+  /// Measured over prior cost, EMA per method name (index in m_methods) and over all: {sum, n}.
+  std::vector<std::string> m_methods;
+  std::vector<double> m_methodRatio;
+  std::vector<int> m_methodRatioSamples;
+  double m_allRatio = 1.0;
+  int m_allRatioSamples = 0;
   std::vector<int> m_switchSamples;
 };
 
