@@ -37,6 +37,25 @@ budgets = [r["budget_ms"] for r in results]
 assert all(a < b for a, b in zip(budgets, budgets[1:])), budgets
 # The loosest budget fits some fixed setting (the budgets come from their measured times).
 assert results[-1]["fixed_best_rel_rms"] is not None, results[-1]
+bench = json.load(open(sys.argv[1]))
+# Every pixel the truth covers (its centre ray meets the scene) shows exactly one organ: the
+# per-organ masks (budget_bench_pixels) partition the covered pixels, and the pixels off every
+# silhouette are among them.
+counts, truth = bench["organ_pixel_counts"], bench["truth"]
+assert len(counts) == len(bench["organs"]) == 5, counts
+assert all(isinstance(c, int) and c >= 0 for c in counts), counts
+assert sum(counts) == truth["organ_pixels"], (counts, truth)
+assert 0 <= truth["organ_pixels_off_silhouettes"] <= truth["organ_pixels"], truth
+# Each controller run records its timed frames, the frames its plan changed in, and the
+# medians above come from them.
+for run, r in zip(bench["controller"], results):
+    ms = sorted(run["frame_ms"])
+    assert len(ms) == bench["timed_frames"] and all(m > 0 for m in ms), run
+    assert ms[math.ceil(0.5 * len(ms)) - 1] == r["frame_ms_median"], (ms, r)
+    assert all(0 <= f < len(ms) for f in run["plan_change_frames"]), run
+    assert len(run["plan_change_frames"]) <= run["plan_changes"], run
+for f in bench["fixed"]:
+    assert f["first_frame_ms"] > 0, f
 PY
 
 # Bad input: refused before any replay or truth, in one line.
