@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 
 namespace tissue::quality {
@@ -110,24 +111,39 @@ TEST(QualityController, TinyFootprintsFallBackToLitWithWrap) {
   EXPECT_FALSE(choices[0].fallback);
 }
 
-// `frames` frames of `c` whose measured costs are the table's (the true costs) times a noise
-// factor and, on odd frames, times `oddFactor` (even: 1 / oddFactor).
-void runFrames(QualityController& c, const std::vector<ObjectView>& objs, double budget, int frames,
-               std::mt19937& rng, double oddFactor) {
+// `frames` frames of `c` under `budget`: each frame's overhead is `overhead(f)` ms (called
+// first), each object's measured cost `measure(f, choice, trueMs)` with trueMs its option's table
+// cost at its footprint (the machine's true cost). Returns each frame's measured ms.
+std::vector<double> simulate(QualityController& c, const std::vector<ObjectView>& objs, double budget,
+                             int frames, const std::function<double(int)>& overhead,
+                             const std::function<double(int, const ObjectChoice&, double)>& measure) {
   const QualityTable& t = c.table();
-  std::normal_distribution<double> noise(1.0, 0.04);  // 4% measurement noise
+  std::vector<double> out;
   for (int f = 0; f < frames; ++f) {
     const auto& ch = c.update(objs, kScreenPx, budget);
     std::vector<CostSample> samples;
-    double frame = t.frameOverheadMs;
+    double frame = overhead(f);
     for (std::size_t i = 0; i < ch.size(); ++i) {
       const QualityOption& o = t.options[std::size_t(ch[i].option)];
-      const double swing = f % 2 ? oddFactor : 1.0 / oddFactor;
-      samples.push_back({i, (o.fixedMs + o.msPerPx * objs[i].footprintPx) * noise(rng) * swing});
+      samples.push_back({i, measure(f, ch[i], o.fixedMs + o.msPerPx * objs[i].footprintPx)});
       frame += samples.back().ms;
     }
     c.observe(samples, frame);
+    out.push_back(frame);
   }
+  return out;
+}
+
+// Measured costs the true ones times 4 % noise and, on odd frames, times `oddFactor` (even: 1 /
+// oddFactor); the overhead the table's.
+void runFrames(QualityController& c, const std::vector<ObjectView>& objs, double budget, int frames,
+               std::mt19937& rng, double oddFactor) {
+  std::normal_distribution<double> noise(1.0, 0.04);  // 4% measurement noise
+  simulate(
+      c, objs, budget, frames, [&](int) { return c.table().frameOverheadMs; },
+      [&](int f, const ObjectChoice&, double ms) {
+        return ms * noise(rng) * (f % 2 ? oddFactor : 1.0 / oddFactor);
+      });
 }
 
 TEST(QualityController, HysteresisHoldsThePlanUnderNoisyCosts) {
@@ -167,27 +183,15 @@ TEST(QualityController, HysteresisHoldsThePlanUnderNoisyCosts) {
 }
 
 // Frames as runFrames (4% noise, no swing), where an object's first frame with a new option
-// costs `spikeMs` more (its pass and the frame): the one-off cost of a switch. Returns each
-// frame's measured ms.
+// costs `spikeMs` more (its pass and the frame): the one-off cost of a switch.
 std::vector<double> runSpiked(QualityController& c, const std::vector<ObjectView>& objs, double budget,
                               int frames, std::mt19937& rng, double spikeMs) {
-  const QualityTable& t = c.table();
   std::normal_distribution<double> noise(1.0, 0.04);
-  std::vector<double> out;
-  for (int f = 0; f < frames; ++f) {
-    const auto& ch = c.update(objs, kScreenPx, budget);
-    std::vector<CostSample> samples;
-    double frame = t.frameOverheadMs;
-    for (std::size_t i = 0; i < ch.size(); ++i) {
-      const QualityOption& o = t.options[std::size_t(ch[i].option)];
-      samples.push_back(
-          {i, (o.fixedMs + o.msPerPx * objs[i].footprintPx) * noise(rng) + (ch[i].switched ? spikeMs : 0.0)});
-      frame += samples.back().ms;
-    }
-    c.observe(samples, frame);
-    out.push_back(frame);
-  }
-  return out;
+  return simulate(
+      c, objs, budget, frames, [&](int) { return c.table().frameOverheadMs; },
+      [&](int, const ObjectChoice& ch, double ms) {
+        return ms * noise(rng) + (ch.switched ? spikeMs : 0.0);
+      });
 }
 
 TEST(QualityController, SwitchSpikesAreLearnedApartAndTheSwitchWaitsUntilItFits) {
@@ -239,26 +243,18 @@ TEST(QualityController, SwitchSpikesAreLearnedApartAndTheSwitchWaitsUntilItFits)
 }
 
 // Frames whose every cost (objects and overhead) is the table's times one factor per frame,
-// normal about 1 with relative spread `spread` (a shared machine's speed); returns each frame's ms.
+// normal about 1 with relative spread `spread` (a shared machine's speed).
 std::vector<double> runSharedNoise(QualityController& c, const std::vector<ObjectView>& objs, double budget,
                                    int frames, std::mt19937& rng, double spread) {
-  const QualityTable& t = c.table();
   std::normal_distribution<double> speed(1.0, spread);
-  std::vector<double> out;
-  for (int f = 0; f < frames; ++f) {
-    const auto& ch = c.update(objs, kScreenPx, budget);
-    const double k = std::max(0.3, speed(rng));
-    std::vector<CostSample> samples;
-    double frame = t.frameOverheadMs * k;
-    for (std::size_t i = 0; i < ch.size(); ++i) {
-      const QualityOption& o = t.options[std::size_t(ch[i].option)];
-      samples.push_back({i, (o.fixedMs + o.msPerPx * objs[i].footprintPx) * k});
-      frame += samples.back().ms;
-    }
-    c.observe(samples, frame);
-    out.push_back(frame);
-  }
-  return out;
+  double k = 1.0;  // this frame's factor, drawn with its overhead
+  return simulate(
+      c, objs, budget, frames,
+      [&](int) {
+        k = std::max(0.3, speed(rng));
+        return c.table().frameOverheadMs * k;
+      },
+      [&](int, const ObjectChoice&, double ms) { return ms * k; });
 }
 
 double p95(std::vector<double> v) {
@@ -302,17 +298,9 @@ TEST(QualityController, AMeasuredSettingCalibratesItsUnmeasuredSiblings) {
   for (ObjectView& v : objs)
     v.allowed = {2};             // separable preintegrated-7
   objs[4].footprintPx = 1000.0;  // above the fallback threshold
-  for (int f = 0; f < 40; ++f) {
-    const auto& ch = c.update(objs, kScreenPx, 1000.0);
-    std::vector<CostSample> samples;
-    double frame = t.frameOverheadMs;
-    for (std::size_t i = 0; i < ch.size(); ++i) {
-      const QualityOption& o = t.options[std::size_t(ch[i].option)];
-      samples.push_back({i, 3.0 * (o.fixedMs + o.msPerPx * objs[i].footprintPx)});
-      frame += samples.back().ms;
-    }
-    c.observe(samples, frame);
-  }
+  simulate(
+      c, objs, 1000.0, 40, [&](int) { return t.frameOverheadMs; },
+      [](int, const ObjectChoice&, double ms) { return 3.0 * ms; });
   const auto planned = c.planningCosts();
   for (int o : {3, 4, 5, 6}) {  // separable-17 (sibling), texture space, ray march x 2
     const double prior = t.options[std::size_t(o)].fixedMs + t.options[std::size_t(o)].msPerPx * 5000.0;

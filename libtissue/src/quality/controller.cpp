@@ -37,6 +37,14 @@ double weightOf(const ObjectView& v) {
   return std::max(0.0, v.importance) * std::max(0.0, v.footprintPx);
 }
 
+// One sample x into the mean v of n samples so far: a running mean until 1 / rate samples, then an
+// EMA of weight `rate` (started without bias). Every learned figure of the controller uses it.
+void runningEma(double& v, int& n, double x, double rate) {
+  const double a = std::clamp(std::max(rate, 1.0 / double(n + 1)), 0.0, 1.0);
+  v = (1 - a) * v + a * x;
+  ++n;
+}
+
 double costOf(std::span<const CostModel> costs, int option, const ObjectView& v) {
   return std::max(0.0, costs[std::size_t(option)].predictMs(std::max(0.0, v.footprintPx)));
 }
@@ -198,9 +206,11 @@ QualityController::QualityController(QualityTable table, ControllerSettings sett
     m_costs.push_back(costModelOf(o));
   m_overheadMs = m_table.frameOverheadMs;
   m_switchMs.assign(m_table.options.size(), 0.0);
-  for (const QualityOption& o : m_table.options)
-    if (std::find(m_methods.begin(), m_methods.end(), o.method) == m_methods.end())
-      m_methods.push_back(o.method);
+  for (const QualityOption& o : m_table.options) {
+    const auto it = std::find(m_methods.begin(), m_methods.end(), o.method);
+    m_optionMethod.push_back(std::size_t(it - m_methods.begin()));
+    if (it == m_methods.end()) m_methods.push_back(o.method);
+  }
   m_methodRatio.assign(m_methods.size(), 1.0);
   m_methodRatioSamples.assign(m_methods.size(), 0);
   m_switchSamples.assign(m_table.options.size(), 0);
@@ -210,8 +220,7 @@ std::vector<CostModel> QualityController::planningCosts() const {
   std::vector<CostModel> out = m_costs;
   for (std::size_t o = 0; o < out.size(); ++o) {
     if (out[o].samples > 0) continue;
-    const auto m = std::size_t(std::find(m_methods.begin(), m_methods.end(), m_table.options[o].method) -
-                               m_methods.begin());
+    const std::size_t m = m_optionMethod[o];
     const double ratio = m_methodRatioSamples[m] > 0 ? m_methodRatio[m]
                          : m_allRatioSamples > 0     ? m_allRatio
                                                      : 1.0;
@@ -315,43 +324,27 @@ void QualityController::observe(std::span<const CostSample> samples, double fram
     const double prior = opt.fixedMs + opt.msPerPx * std::max(0.0, px);
     if (prior > 1e-9 && std::isfinite(c.ms)) {
       const double ratio = std::clamp(c.ms / prior, 0.05, 20.0);
-      const auto m =
-          std::size_t(std::find(m_methods.begin(), m_methods.end(), opt.method) - m_methods.begin());
-      auto ema = [&](double& v, int& n) {
-        const double a = std::clamp(std::max(m_settings.learningRate, 1.0 / double(n + 1)), 0.0, 1.0);
-        v = (1 - a) * v + a * ratio;
-        ++n;
-      };
-      ema(m_methodRatio[m], m_methodRatioSamples[m]);
-      ema(m_allRatio, m_allRatioSamples);
+      const std::size_t m = m_optionMethod[std::size_t(o)];
+      runningEma(m_methodRatio[m], m_methodRatioSamples[m], ratio, m_settings.learningRate);
+      runningEma(m_allRatio, m_allRatioSamples, ratio, m_settings.learningRate);
     }
   }
   if (!switchedTo.empty()) {
-    // The excess over the plan's steady prediction, shared among the options switched to; a
-    // running mean until 1 / rate samples, then an EMA (as observeCost).
+    // The excess over the plan's steady prediction, shared among the options switched to.
     if (!std::isfinite(frameMs)) return;
     const double excess = std::max(0.0, frameMs - m_plan.predictedMs) / double(switchedTo.size());
-    for (int o : switchedTo) {
-      int& n = m_switchSamples[std::size_t(o)];
-      const double a = std::clamp(std::max(m_settings.learningRate, 1.0 / double(n + 1)), 0.0, 1.0);
-      m_switchMs[std::size_t(o)] = (1 - a) * m_switchMs[std::size_t(o)] + a * excess;
-      ++n;
-    }
+    for (int o : switchedTo)
+      runningEma(m_switchMs[std::size_t(o)], m_switchSamples[std::size_t(o)], excess,
+                 m_settings.learningRate);
     return;
   }
   if (std::isfinite(frameMs) && frameMs > 0.0) {
-    // The frames' spread about their running mean under this plan (frameSpread); both a
-    // running mean until 1 / rate samples, then an EMA.
-    const double rate = m_settings.learningRate;
+    // The frames' spread about their running mean under this plan (frameSpread).
     if (m_meanSamples > 0) {
       const double r = (frameMs - m_frameMean) / m_frameMean;
-      const double a = std::clamp(std::max(rate, 1.0 / double(m_frameSamples + 1)), 0.0, 1.0);
-      m_frameVar = (1 - a) * m_frameVar + a * std::min(r * r, 1.0);
-      ++m_frameSamples;
+      runningEma(m_frameVar, m_frameSamples, std::min(r * r, 1.0), m_settings.learningRate);
     }
-    const double b = std::clamp(std::max(rate, 1.0 / double(m_meanSamples + 1)), 0.0, 1.0);
-    m_frameMean = (1 - b) * m_frameMean + b * frameMs;
-    ++m_meanSamples;
+    runningEma(m_frameMean, m_meanSamples, frameMs, m_settings.learningRate);
   }
   if (std::isfinite(frameMs)) {
     const double a = std::clamp(m_settings.learningRate, 0.0, 1.0);

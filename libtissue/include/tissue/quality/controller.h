@@ -188,6 +188,7 @@ class QualityController {
   std::vector<double> m_switchMs;  ///< per option, ms (switchCostsMs)
   /// Measured over prior cost, EMA per method name (index in m_methods) and over all: {sum, n}.
   std::vector<std::string> m_methods;
+  std::vector<std::size_t> m_optionMethod;  ///< per option, its method's index in m_methods
   std::vector<double> m_methodRatio;
   std::vector<int> m_methodRatioSamples;
   double m_allRatio = 1.0;
