@@ -111,6 +111,27 @@ TEST(QualityController, TinyFootprintsFallBackToLitWithWrap) {
   EXPECT_FALSE(choices[0].fallback);
 }
 
+// The atlas's truth is noisy: a lower mean error it did not resolve (a large standard error of
+// the paired difference) must not win over a slightly higher one it did.
+TEST(QualityController, AnUnresolvedLeadDoesNotWinOnTheTruthsNoise) {
+  QualityTable t;
+  QualityOption noisy = option("ray-march", "10", 0.20, 1.0, 1e-4);
+  noisy.squaredStderr.fill(0.05);  // 0.04 +- 0.05: the truth cannot tell it from 0.09
+  QualityOption resolved = option("texture-space", "6g-opt", 0.25, 1.0, 1e-4);
+  resolved.squaredStderr.fill(0.001);
+  t.options = {option("lit", "default", 0.5, 0.1, 1e-5), noisy, resolved};
+  const std::vector<ObjectView> one(1, objects()[1]);
+  ControllerSettings s;
+  const Plan charged = choosePlan(t, priors(t), 0.0, one, kScreenPx, 100.0, s);
+  ASSERT_TRUE(charged.fits);
+  EXPECT_EQ(t.options[std::size_t(charged.option[0])].method, "texture-space");
+  // The charged error: sqrt(e^2 + 1 s.e.) on the object's view (poked: e = 0.25 x 1.1).
+  EXPECT_NEAR(charged.expectedError, std::sqrt(0.275 * 0.275 + 0.001), 1e-12);
+  s.errorConfidence = 0.0;  // the means alone: the noisy lead wins
+  const Plan means = choosePlan(t, priors(t), 0.0, one, kScreenPx, 100.0, s);
+  EXPECT_EQ(t.options[std::size_t(means.option[0])].method, "ray-march");
+}
+
 // `frames` frames of `c` under `budget`: each frame's overhead is `overhead(f)` ms (called
 // first), each object's measured cost `measure(f, choice, trueMs)` with trueMs its option's table
 // cost at its footprint (the machine's true cost). Returns each frame's measured ms.

@@ -15,9 +15,12 @@ const char* kAtlas = R"({
   "truth": {"frames": [{"frame": "rest", "organ_pixels": 1000}, {"frame": "poked", "organ_pixels": 1000},
                        {"frame": "close-up", "organ_pixels": 5000}]},
   "results": [
-    {"method": "lit", "setting": "default", "frame": "rest", "ms": 3.0, "rel_rms": 0.5, "rel_rms_debiased": 0.4},
-    {"method": "lit", "setting": "default", "frame": "poked", "ms": 3.0, "rel_rms": 0.6, "rel_rms_debiased": 0.45},
-    {"method": "lit", "setting": "default", "frame": "close-up", "ms": 7.0, "rel_rms": 0.7, "rel_rms_debiased": 0.6},
+    {"method": "lit", "setting": "default", "frame": "rest", "ms": 3.0, "rel_rms": 0.5, "rel_rms_debiased": 0.4,
+     "squared_vs_best_stderr": 0.003},
+    {"method": "lit", "setting": "default", "frame": "poked", "ms": 3.0, "rel_rms": 0.6, "rel_rms_debiased": 0.45,
+     "squared_vs_best_stderr": 0.002},
+    {"method": "lit", "setting": "default", "frame": "close-up", "ms": 7.0, "rel_rms": 0.7, "rel_rms_debiased": 0.6,
+     "squared_vs_best_stderr": 0.004},
     {"method": "ray-march", "setting": "50", "frame": "rest", "ms": 14.0, "rel_rms": 0.2},
     {"method": "ray-march", "setting": "50", "frame": "close-up", "ms": 54.0, "rel_rms": 0.3},
     {"method": "ray-march", "setting": "50", "frame": "backlit", "ms": 9.0, "rel_rms": 0.9}
@@ -36,6 +39,12 @@ TEST(QualityTable, ReadsErrorsPerViewClassAndCostPriors) {
   // Grazing is missing: the mean of the others.
   EXPECT_NEAR(l.relRms[std::size_t(ViewClass::Grazing)], (0.4 + 0.45 + 0.6) / 3.0, 1e-12);
   EXPECT_DOUBLE_EQ(m.relRms[std::size_t(ViewClass::Rest)], 0.2);
+  // How well the truth resolved each error: the paired difference's standard error, the mean of
+  // the others where a frame is missing, 0 where the atlas gives none.
+  EXPECT_DOUBLE_EQ(l.squaredStderr[std::size_t(ViewClass::Rest)], 0.003);
+  EXPECT_DOUBLE_EQ(l.squaredStderr[std::size_t(ViewClass::CloseUp)], 0.004);
+  EXPECT_NEAR(l.squaredStderr[std::size_t(ViewClass::Grazing)], 0.003, 1e-12);
+  EXPECT_DOUBLE_EQ(m.squaredStderr[std::size_t(ViewClass::Rest)], 0.0);
   // lit: 2 ms + 1 ms per 1000 px; the lit intercept is the frame's overhead.
   EXPECT_NEAR(table->frameOverheadMs, 2.0, 1e-9);
   EXPECT_NEAR(l.fixedMs, 0.0, 1e-9);

@@ -45,6 +45,14 @@ void runningEma(double& v, int& n, double x, double rate) {
   ++n;
 }
 
+// The squared error a plan is charged for `option` on a `view`: the table's, plus
+// errorConfidence of the standard errors with which the atlas's truth resolved it (a pessimistic
+// bound: an option whose lead the truth could not resolve does not win on its noise).
+double chargedSquaredError(const QualityOption& option, ViewClass view, const ControllerSettings& s) {
+  const double e = option.relRms[std::size_t(view)];
+  return e * e + std::max(0.0, s.errorConfidence) * option.squaredStderr[std::size_t(view)];
+}
+
 double costOf(std::span<const CostModel> costs, int option, const ObjectView& v) {
   return std::max(0.0, costs[std::size_t(option)].predictMs(std::max(0.0, v.footprintPx)));
 }
@@ -123,8 +131,8 @@ Plan evaluatePlan(const QualityTable& table, std::span<const CostModel> costs, d
   for (std::size_t i = 0; i < objects.size() && i < p.option.size(); ++i) {
     const int o = p.option[i];
     p.predictedMs += costOf(costs, o, objects[i]);
-    const double e = table.options[std::size_t(o)].relRms[std::size_t(viewClassOf(objects[i], screenPx, s))];
-    we += weightOf(objects[i]) * e * e;
+    we += weightOf(objects[i]) *
+          chargedSquaredError(table.options[std::size_t(o)], viewClassOf(objects[i], screenPx, s), s);
     w += weightOf(objects[i]);
   }
   p.expectedError = w > 0.0 ? std::sqrt(we / w) : 0.0;
@@ -158,8 +166,7 @@ Plan choosePlan(const QualityTable& table, std::span<const CostModel> costs, dou
       std::fill(next.begin(), next.end(), kInf);
       for (int o : cand[i]) {
         const long u = long(std::ceil(costOf(costs, o, objects[i]) / grid - 1e-9));
-        const double e = table.options[std::size_t(o)].relRms[std::size_t(view)];
-        const double term = w * e * e;
+        const double term = w * chargedSquaredError(table.options[std::size_t(o)], view, s);
         for (long k = u; k < long(cols); ++k) {
           const double v = prev[std::size_t(k - u)] + term;
           // Ties go to the cheaper option (fewer units used), for a steady choice.

@@ -85,7 +85,7 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
       if (f.contains("frame") && f.contains("organ_pixels"))
         pixelsOf[f["frame"].get<std::string>()] = f["organ_pixels"].get<double>();
   struct Acc {
-    std::array<double, kViewClassCount> err{};
+    std::array<double, kViewClassCount> err{}, squaredStderr{};
     std::array<bool, kViewClassCount> has{};
     std::vector<std::pair<double, double>> pxMs;
   };
@@ -108,6 +108,8 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
       e = row["rel_rms_debiased"].get<double>();
     if (!std::isfinite(e)) continue;
     a.err[std::size_t(v)] = e;
+    if (row.contains("squared_vs_best_stderr") && row["squared_vs_best_stderr"].is_number())
+      a.squaredStderr[std::size_t(v)] = std::max(0.0, row["squared_vs_best_stderr"].get<double>());
     a.has[std::size_t(v)] = true;
   }
   QualityTable table;
@@ -129,19 +131,22 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
   }
   for (const auto& id : order) {
     const Acc& a = acc[id];
-    double sum = 0.0;
+    double sum = 0.0, sumStderr = 0.0;
     int n = 0;
     for (std::size_t v = 0; v < kViewClassCount; ++v)
       if (a.has[v]) {
         sum += a.err[v];
+        sumStderr += a.squaredStderr[v];
         ++n;
       }
     if (n == 0) continue;  // no frame the controller uses
     QualityOption o;
     o.method = id.first;
     o.setting = id.second;
-    for (std::size_t v = 0; v < kViewClassCount; ++v)
+    for (std::size_t v = 0; v < kViewClassCount; ++v) {
       o.relRms[v] = a.has[v] ? a.err[v] : sum / n;
+      o.squaredStderr[v] = a.has[v] ? a.squaredStderr[v] : sumStderr / n;
+    }
     o.fixedMs = std::max(0.0, lines[id].first - table.frameOverheadMs);
     o.msPerPx = lines[id].second;
     table.options.push_back(std::move(o));

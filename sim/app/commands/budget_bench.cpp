@@ -1,9 +1,9 @@
 // tissue-sim budget-bench [--out DIR] [--budgets MS,MS,...] [--width W --height H]
-// [--truth-seconds S] [--frames N] --json: a scene of five livers (a close-up, two at mid distance,
-// two far and small), one deformed by the replayed data/sessions/liver_poke_grasp.json, under
-// frame budgets with the quality controller choosing each organ's method and setting, against
-// every single setting on all organs; errors against the path-traced truth (issue 16). The bench
-// is tissue::studies' (studies/budget_bench.h); this command parses and prints.
+// [--truth-seconds S] [--frames N] --json: a scene of five livers (the poked one in close-up, two
+// at mid distance, two far and small), the close-up deformed by the replayed
+// data/sessions/liver_poke_grasp.json, under frame budgets with the quality controller choosing each organ's
+// method and setting, against every single setting on all organs; errors against the path-traced truth (issue
+// 16). The bench is tissue::studies' (studies/budget_bench.h); this command parses and prints.
 
 #include <cstdio>
 

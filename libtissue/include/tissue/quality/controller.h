@@ -47,6 +47,10 @@ struct ControllerSettings {
   /// (QualityController::planningCosts): its cost is uncertain, and a frame over the budget costs
   /// more than a gain missed for a while (1: trust the calibrated prior).
   double unmeasuredCostFactor = 1.5;
+  /// Plans charge each option's squared error this many standard errors of the atlas's paired
+  /// difference above it (QualityOption::squaredStderr): the table's truth is noisy, and an
+  /// option whose lead it did not resolve should not win on that noise (0: the table's means).
+  double errorConfidence = 1.0;
   double costGridMs = 0.02;          ///< ms, the knapsack's cost resolution (costs round up)
   int holdFrames = 30;               ///< a new plan at most every N frames (hysteresis)
   double gainMargin = 0.1;           ///< a new plan only if its expected error is this much lower
@@ -86,10 +90,12 @@ ViewClass viewClassOf(const ObjectView& view, double screenPx, const ControllerS
 
 /// A plan: one option per object.
 struct Plan {
-  std::vector<int> option;     ///< per object, table index
-  double predictedMs = 0.0;    ///< ms, frame overhead + the objects' predicted costs
-  double expectedError = 0.0;  ///< sqrt(sum w_i e_i^2 / sum w_i), w = importance x footprint
-  bool fits = true;            ///< predictedMs <= the planned budget (false: the cheapest plan)
+  std::vector<int> option;   ///< per object, table index
+  double predictedMs = 0.0;  ///< ms, frame overhead + the objects' predicted costs
+  /// sqrt(sum w_i c_i / sum w_i), w = importance x footprint, c the charged squared error
+  /// e^2 + errorConfidence x squaredStderr of the option on the object's view
+  double expectedError = 0.0;
+  bool fits = true;  ///< predictedMs <= the planned budget (false: the cheapest plan)
 };
 
 /// The plan of least expected error whose predicted cost fits `budgetMs` (x (1 - headroom)),

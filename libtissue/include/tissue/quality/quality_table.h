@@ -34,6 +34,11 @@ struct QualityOption {
   /// Expected relative RMS error against the truth per ViewClass (the atlas's debiased rel RMS
   /// when the JSON has it); a class the atlas lacks takes the mean of the others.
   std::array<double, kViewClassCount> relRms{};
+  /// How well the atlas's truth resolved that error, per ViewClass: the standard error of the
+  /// paired difference of squared rel RMS against the frame's best option (the atlas's
+  /// `squared_vs_best_stderr`; studies::errorDifference). 0 where the JSON lacks it (and for the
+  /// frame's best). Unitless (squared rel RMS).
+  std::array<double, kViewClassCount> squaredStderr{};
   double fixedMs = 0.0;  ///< ms, the cost prior's part per object
   double msPerPx = 0.0;  ///< ms per covered pixel, the cost prior's part per pixel
 };

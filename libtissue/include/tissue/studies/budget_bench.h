@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// The budget bench (issue 16): a scene of several organs (a close-up, two at mid distance, two
-/// far and small), one of them deformed by a replayed session, rendered under frame budgets from
+/// The budget bench (issue 16): a scene of several organs seen through a laparoscope with its
+/// light beside the lens (the poked organ in close-up, about 100 mm away, two at mid distance, two
+/// far and small), the close-up deformed by a replayed session, rendered under frame budgets from
 /// tight to loose with the quality controller choosing each organ's method and setting
 /// (Scene::setBudgetMs), and with every single table setting applied to all organs. Each run's
 /// frame times (upload, render, read back: what a host's frame pays for the tissue) and the error
