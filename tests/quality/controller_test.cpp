@@ -111,6 +111,29 @@ TEST(QualityController, TinyFootprintsFallBackToLitWithWrap) {
   EXPECT_FALSE(choices[0].fallback);
 }
 
+// The fallback tier is lit: with the wrap term where the table says it helps the view, plain
+// where the truth shows the wrap term adds error (the budget bench's far organs).
+TEST(QualityController, TheFallbackTierTakesTheWrapTermOnlyWhereItHelps) {
+  QualityTable t = table();
+  const int wrap = t.find("lit", "wrap"), plain = t.find("lit", "default");
+  t.options[std::size_t(wrap)].relRms[std::size_t(ViewClass::Rest)] = 0.55;  // above lit's 0.50
+  const std::vector<ObjectView> small(1, objects()[4]);                      // 150 px, at rest
+  QualityController c(t);
+  const auto& choices = c.update(small, kScreenPx, 1000.0);
+  ASSERT_EQ(choices.size(), 1u);
+  EXPECT_EQ(choices[0].option, plain);
+  EXPECT_TRUE(choices[0].fallback);
+  // Grazing, the table's wrap stays below plain lit (0.48 x 1.2 against 0.50 x 1.2): the wrap term.
+  std::vector<ObjectView> grazing = small;
+  grazing[0].viewAngleDeg = 80.0;
+  QualityController g(t);
+  EXPECT_EQ(g.update(grazing, kScreenPx, 1000.0)[0].option, wrap);
+  // Never anything but the lit tier below the threshold, however loose the budget (a budget
+  // far above every cost coarsens the knapsack's grid instead of growing it).
+  for (const ObjectChoice& ch : c.update(small, kScreenPx, 1e9))
+    EXPECT_EQ(ch.method, "lit");
+}
+
 // The atlas's truth is noisy: a lower mean error it did not resolve (a large standard error of
 // the paired difference) must not win over a slightly higher one it did.
 TEST(QualityController, AnUnresolvedLeadDoesNotWinOnTheTruthsNoise) {

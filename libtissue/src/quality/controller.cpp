@@ -10,18 +10,26 @@ namespace tissue::quality {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kMaxCostUnits = 20000.0;  // the knapsack's columns at most (choosePlan)
 
 int wrapOption(const QualityTable& table, const ControllerSettings& s) {
   const int wrap = table.find(s.wrapMethod, s.wrapSetting);
   return wrap >= 0 ? wrap : table.find(s.wrapMethod, "default");
 }
 
-// The options object `view` may take: the wrap fallback alone below the footprint threshold.
+// The options object `view` may take. Below the footprint threshold, the fallback tier: the
+// fallback method with its wrap term and without it, whichever the table's error for the view
+// (and the cost) prefers. The wrap term stands in for the scattering lit lacks (Unreal
+// Substrate's Wrap tier); where the truth shows it adds error, the tier is plain lit.
 std::vector<int> candidatesOf(const QualityTable& table, const ObjectView& view,
                               const ControllerSettings& s) {
   std::vector<int> out;
   const int wrap = wrapOption(table, s);
-  if (view.footprintPx < s.minFootprintPx && wrap >= 0) return {wrap};
+  if (view.footprintPx < s.minFootprintPx && wrap >= 0) {
+    const int plain = table.find(s.wrapMethod, "default");
+    if (plain >= 0 && plain != wrap) return {wrap, plain};
+    return {wrap};
+  }
   if (view.allowed.empty()) {
     for (std::size_t o = 0; o < table.options.size(); ++o)
       out.push_back(int(o));
@@ -147,8 +155,10 @@ Plan choosePlan(const QualityTable& table, std::span<const CostModel> costs, dou
   std::vector<std::vector<int>> cand(n);
   for (std::size_t i = 0; i < n; ++i)
     cand[i] = candidatesOf(table, objects[i], s);
-  const double grid = std::max(s.costGridMs, 1e-4);
   const double free = budgetMs * (1.0 - s.headroom) - overheadMs;
+  // At most kMaxCostUnits grid units: a budget far above any cost (a host's "no limit") coarsens
+  // the grid instead of growing the table (bounded time and memory).
+  const double grid = std::max({s.costGridMs, 1e-4, free / kMaxCostUnits});
   // Exact multiple-choice knapsack: best[i][k] = least sum w e^2 of objects < i within k grid
   // units (costs rounded up, so a plan found fits). Monotone in k, hence in the budget.
   const long K = free >= 0.0 ? long(std::floor(free / grid + 1e-9)) : -1;

@@ -8,7 +8,8 @@
 /// exponential moving average of the least-squares normal equations). The choice is exact (a
 /// multiple-choice knapsack by dynamic programming over costs rounded up to a grid), so it fits
 /// and more budget never gives a higher expected error. Objects below a footprint fall back to
-/// lit with a wrap term (Unreal Substrate's Wrap tier). GL-free. Units: ms, px, mm, degrees.
+/// the lit tier: lit with a wrap term (Unreal Substrate's Wrap tier), or plain lit where the
+/// table's truth says the wrap term adds error. GL-free. Units: ms, px, mm, degrees.
 
 #include <cmath>
 #include <cstddef>
@@ -34,7 +35,9 @@ struct ObjectView {
 
 /// The controller's settings (plain struct with defaults).
 struct ControllerSettings {
-  double minFootprintPx = 400.0;   ///< px; below: lit with wrap (about 20 x 20 pixels)
+  /// px; below (about 20 x 20 pixels): the fallback tier, lit with its wrap term or plain lit,
+  /// whichever the table's error for the view prefers
+  double minFootprintPx = 400.0;
   double closeUpFraction = 0.25;   ///< of the screen's pixels covered: the close-up class
   double closeUpDistanceMm = 0.0;  ///< mm; nearer than this is close-up too (0: off)
   double grazingDeg = 72.0;        ///< degrees; a view angle above it is the grazing class

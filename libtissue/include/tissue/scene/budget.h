@@ -51,7 +51,7 @@ struct BudgetChoice {
   double predictedMs = 0.0;     ///< ms
   double expectedRelRms = 0.0;  ///< the table's error for its view class
   std::string view;             ///< the atlas frame its view resembles
-  bool fallback = false;        ///< below the footprint threshold: lit with wrap
+  bool fallback = false;        ///< below the footprint threshold: the lit tier (wrap or plain)
   quality::MeshWork mesh;       ///< what its method needs of the mesh each frame
 };
 
