@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "tissue/studies/demo_run.h"
@@ -64,6 +65,25 @@ TEST(DemoRun, ShortMainJobWritesItsReportAndReplaysBitForBit) {
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["raymarch"].size(), 2u);  // the whole organ and the close-up (frameForRayMarch)
   EXPECT_FALSE(j["embedded_scene"].contains("skipped")) << j["embedded_scene"];
+  // The embedded scene under two frame budgets: each organ's choice is one of the five methods
+  // at a positive predicted cost, the lit tier wherever it fell back, and each budget's frame.
+  const auto& budgets = j["embedded_scene"]["budgets"];
+  ASSERT_EQ(budgets.size(), 2u) << j["embedded_scene"];
+  const std::set<std::string> methods{"lit", "separable", "texture-space", "ray-march", "parallax"};
+  for (const auto& b : budgets) {
+    ASSERT_EQ(b["choices"].size(), 2u) << b;
+    for (const auto& c : b["choices"]) {
+      EXPECT_TRUE(methods.count(c["method"].get<std::string>())) << c;
+      EXPECT_GT(c["footprint_px"].get<double>(), 0.0) << c;
+      EXPECT_GT(c["predicted_ms"].get<double>(), 0.0) << c;
+      if (c["fallback"].get<bool>()) {
+        EXPECT_EQ(c["method"], "lit") << c;
+      }
+    }
+    EXPECT_GT(b["frame_ms"]["median"].get<double>(), 0.0);
+    EXPECT_GT(std::filesystem::file_size(config.outDir / b["image"].get<std::string>()), 0u);
+  }
+  EXPECT_LT(budgets[0]["budget_ms"].get<double>(), budgets[1]["budget_ms"].get<double>());
   EXPECT_EQ(j["sequence"]["panels"], nlohmann::json({"frames/frame_0030.png", "frames/frame_0060.png"}));
 
   // Step 2: the files: report.json with every frame's force, report.md with its tables.

@@ -101,6 +101,45 @@ nlohmann::json renderRayMarch(scene::Scene& s, const mesh::DeformableSurface& su
   return report;
 }
 
+namespace {
+
+// The host's one setting (issue 16): a frame budget, 60 Hz and a loose 1 s, each for 45 frames of
+// its loop (simulate, render) while the controller chooses each organ's method and learns the pass
+// times; then the frame as the trainee sees it and what was chosen.
+Result<nlohmann::json> renderUnderBudgets(scene::Scene& s, const std::filesystem::path& outDir, int width,
+                                          int height) {
+  nlohmann::json out = nlohmann::json::array();
+  for (double budgetMs : {1000.0 / 60.0, 1000.0}) {
+    if (auto b = s.setBudgetMs(budgetMs); !b) return b.error();
+    std::vector<double> frameMs;
+    for (int frame = 0; frame < 45; ++frame) {
+      if (auto step = s.step(1.0 / 60.0); !step) return step.error();
+      Stopwatch watch;
+      if (auto image = s.renderImage(width, height); !image) return image.error();
+      frameMs.push_back(watch.elapsedMs());
+    }
+    const std::string name = "frame_embedded_budget_" + std::to_string(int(std::lround(budgetMs))) + "ms.png";
+    if (auto r = s.renderPng(outDir / name, width, height); !r) return r.error();
+    nlohmann::json choices = nlohmann::json::array();
+    for (const scene::BudgetChoice& c : s.budgetChoices())
+      choices.push_back({{"method", c.method},
+                         {"setting", c.setting},
+                         {"footprint_px", c.footprintPx},
+                         {"view", c.view},
+                         {"predicted_ms", c.predictedMs},
+                         {"fallback", c.fallback}});
+    const auto t = summarizeSamples(frameMs);
+    out.push_back({{"budget_ms", budgetMs},
+                   {"image", name},
+                   {"frame_ms", {{"median", t.median}, {"p99", t.p99}, {"max", t.max}}},
+                   {"choices", std::move(choices)}});
+  }
+  if (auto off = s.setBudgetMs(0.0); !off) return off.error();
+  return out;
+}
+
+}  // namespace
+
 nlohmann::json renderEmbeddedScene(const scene::SceneSettings& settings, const std::filesystem::path& dataDir,
                                    const std::filesystem::path& outDir, int width, int height) {
   auto fail = [](const std::string& why) { return nlohmann::json{{"skipped", why}}; };
@@ -141,8 +180,11 @@ nlohmann::json renderEmbeddedScene(const scene::SceneSettings& settings, const s
   if (auto r = s.renderPng(png, width, height); !r) return fail(r.error().message);
   const Float3 f = s.instrumentForceN();
   const auto t = summarizeSamples(stepMs);
+  auto budgets = renderUnderBudgets(s, outDir, width, height);
+  if (!budgets) return fail(budgets.error().message);
   return {
       {"image", png.filename().string()},
+      {"budgets", std::move(*budgets)},
       {"organs",
        {{{"method", "separable"}, {"simulated", true}},
         {{"method", "texture-space"}, {"simulated", false}, {"model", "quarter turn about z, scale 0.6"}}}},

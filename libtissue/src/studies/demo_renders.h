@@ -34,7 +34,10 @@ nlohmann::json renderRayMarch(scene::Scene& scene, const mesh::DeformableSurface
 /// The simulated liver (its scenario, separable SSS) and a static copy (turned, scaled 0.6 and
 /// moved aside, texture-space diffusion) in one scene::Scene on its own headless context
 /// (`settings`); the instrument comes down 10 mm into the simulated one as a host would move it;
-/// writes `outDir/frame_embedded_scene.png`. `dataDir`: the project's data/.
+/// writes `outDir/frame_embedded_scene.png`; then 45 frames under each of two frame budgets (60 Hz,
+/// 1 s) with the quality controller choosing the organs' methods, each budget's last frame
+/// `frame_embedded_budget_<ms>ms.png` and its choices in the entry's `budgets`. `dataDir`: the
+/// project's data/.
 nlohmann::json renderEmbeddedScene(const scene::SceneSettings& settings, const std::filesystem::path& dataDir,
                                    const std::filesystem::path& outDir, int width, int height);
 
