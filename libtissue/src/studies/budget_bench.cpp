@@ -184,16 +184,11 @@ std::string jsonOf(const BudgetBenchResult& b, const BudgetBenchConfig& config) 
   const auto names = placements();
   for (const BudgetRun& c : b.controller) {
     nlohmann::json choices = nlohmann::json::array();
-    for (std::size_t i = 0; i < c.choices.size(); ++i)
-      choices.push_back({{"organ", i < names.size() ? names[i].name : ""},
-                         {"method", c.choices[i].method},
-                         {"setting", c.choices[i].setting},
-                         {"footprint_px", c.choices[i].footprintPx},
-                         {"view", c.choices[i].view},
-                         {"predicted_ms", c.choices[i].predictedMs},
-                         {"fallback", c.choices[i].fallback},
-                         {"planes", c.choices[i].mesh.planes},
-                         {"tangents", c.choices[i].mesh.tangents}});
+    for (std::size_t i = 0; i < c.choices.size(); ++i) {
+      nlohmann::json choice = detail::budgetChoiceJson(c.choices[i]);
+      choice["organ"] = i < names.size() ? names[i].name : "";
+      choices.push_back(std::move(choice));
+    }
     runs.push_back({{"budget_ms", c.budgetMs},
                     {"plan_changes", c.planChanges},
                     {"frame_ms", c.frameMs},

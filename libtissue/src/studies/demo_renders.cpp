@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "json_text.h"
 #include "loop_detail.h"
 #include "tissue/core/image.h"
 #include "tissue/core/statistics.h"
@@ -122,12 +123,7 @@ Result<nlohmann::json> renderUnderBudgets(scene::Scene& s, const std::filesystem
     if (auto r = s.renderPng(outDir / name, width, height); !r) return r.error();
     nlohmann::json choices = nlohmann::json::array();
     for (const scene::BudgetChoice& c : s.budgetChoices())
-      choices.push_back({{"method", c.method},
-                         {"setting", c.setting},
-                         {"footprint_px", c.footprintPx},
-                         {"view", c.view},
-                         {"predicted_ms", c.predictedMs},
-                         {"fallback", c.fallback}});
+      choices.push_back(detail::budgetChoiceJson(c));
     const auto t = summarizeSamples(frameMs);
     out.push_back({{"budget_ms", budgetMs},
                    {"image", name},

@@ -5,6 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "tissue/scene/budget.h"
+
 namespace tissue::studies::detail {
 
 /// The value, or null when there is none.
@@ -16,6 +18,13 @@ nlohmann::json optionalJson(const std::optional<T>& value) {
 /// The text a report file holds: indented by 2, ending in a newline.
 inline std::string jsonText(const nlohmann::json& value) {
   return value.dump(2) + "\n";
+}
+
+/// What the quality controller chose for one organ (scene::BudgetChoice), as the reports write it.
+inline nlohmann::json budgetChoiceJson(const scene::BudgetChoice& c) {
+  return {{"method", c.method},      {"setting", c.setting},          {"footprint_px", c.footprintPx},
+          {"view", c.view},          {"predicted_ms", c.predictedMs}, {"fallback", c.fallback},
+          {"planes", c.mesh.planes}, {"tangents", c.mesh.tangents}};
 }
 
 }  // namespace tissue::studies::detail
