@@ -62,11 +62,9 @@ TEST(SceneBudget, TheControllerChoosesPerOrganAndTheFarOneFallsBackToTheLitTier)
   EXPECT_EQ(choices[2].method, "lit");
   // Of lit's two settings the one the table's error for the organ's view prefers.
   const quality::QualityTable& table = scene.qualityController()->table();
-  const auto view = std::size_t([&] {
-    for (std::size_t v = 0; v < quality::kViewClassCount; ++v)
-      if (quality::viewClassFrame(quality::ViewClass(v)) == choices[2].view) return v;
-    return std::size_t(0);
-  }());
+  const std::optional<quality::ViewClass> viewClass = quality::viewClassOfFrame(choices[2].view);
+  ASSERT_TRUE(viewClass) << choices[2].view;
+  const auto view = std::size_t(*viewClass);
   // (as charged: the squared error plus one standard error of the atlas's paired difference)
   const auto charged = [&](const char* setting) {
     const quality::QualityOption& o = table.options[std::size_t(table.find("lit", setting))];

@@ -68,6 +68,7 @@ TEST(DemoRun, ShortMainJobWritesItsReportAndReplaysBitForBit) {
   // The embedded scene under two frame budgets: each organ's choice is one of the five methods
   // at a positive predicted cost, the lit tier wherever it fell back, and each budget's frame.
   const auto& budgets = j["embedded_scene"]["budgets"];
+  ASSERT_TRUE(budgets.is_array()) << budgets;  // not {"skipped": why}
   ASSERT_EQ(budgets.size(), 2u) << j["embedded_scene"];
   const std::set<std::string> methods{"lit", "separable", "texture-space", "ray-march", "parallax"};
   for (const auto& b : budgets) {

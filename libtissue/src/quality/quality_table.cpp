@@ -6,6 +6,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 namespace tissue::quality {
@@ -13,12 +14,6 @@ namespace detail {
 const char* embeddedDefaultAtlas();  // default_atlas_embed.cpp, generated from data/quality/
 }  // namespace detail
 namespace {
-
-int viewIndexOfFrame(const std::string& frame) {
-  for (std::size_t v = 0; v < kViewClassCount; ++v)
-    if (frame == viewClassFrame(ViewClass(v))) return int(v);
-  return -1;
-}
 
 // Least squares ms = a + b px over the samples; b clamped at 0 (then a is the mean).
 std::pair<double, double> fitLine(const std::vector<std::pair<double, double>>& pxMs) {
@@ -52,6 +47,12 @@ std::string_view viewClassFrame(ViewClass view) {
       return "grazing";
   }
   return "rest";
+}
+
+std::optional<ViewClass> viewClassOfFrame(std::string_view frame) {
+  for (std::size_t v = 0; v < kViewClassCount; ++v)
+    if (frame == viewClassFrame(ViewClass(v))) return ViewClass(v);
+  return std::nullopt;
 }
 
 int QualityTable::find(std::string_view method, std::string_view setting) const {
@@ -101,16 +102,17 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
     const std::string frame = row["frame"].get<std::string>();
     const double ms = row["ms"].get<double>();
     if (pixelsOf.count(frame) && std::isfinite(ms)) a.pxMs.push_back({pixelsOf[frame], ms});
-    const int v = viewIndexOfFrame(frame);
-    if (v < 0) continue;
+    const std::optional<ViewClass> view = viewClassOfFrame(frame);
+    if (!view) continue;
+    const auto v = std::size_t(*view);
     double e = row["rel_rms"].is_number() ? row["rel_rms"].get<double>() : std::nan("");
     if (settings.debiased && row.contains("rel_rms_debiased") && row["rel_rms_debiased"].is_number())
       e = row["rel_rms_debiased"].get<double>();
     if (!std::isfinite(e)) continue;
-    a.err[std::size_t(v)] = e;
+    a.err[v] = e;
     if (row.contains("squared_vs_best_stderr") && row["squared_vs_best_stderr"].is_number())
-      a.squaredStderr[std::size_t(v)] = std::max(0.0, row["squared_vs_best_stderr"].get<double>());
-    a.has[std::size_t(v)] = true;
+      a.squaredStderr[v] = std::max(0.0, row["squared_vs_best_stderr"].get<double>());
+    a.has[v] = true;
   }
   QualityTable table;
   std::map<std::pair<std::string, std::string>, std::pair<double, double>> lines;

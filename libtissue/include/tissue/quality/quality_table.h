@@ -9,6 +9,7 @@
 
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -23,6 +24,8 @@ enum class ViewClass { Rest, Deforming, CloseUp, Grazing };
 inline constexpr std::size_t kViewClassCount = 4;
 /// The atlas frame's name: "rest", "poked", "close-up", "grazing".
 std::string_view viewClassFrame(ViewClass view);
+/// The view class of an atlas frame's name; none for a frame the controller does not use (backlit).
+std::optional<ViewClass> viewClassOfFrame(std::string_view frame);
 
 /// The setting name of the fallback: lit with a wrap term (Unreal Substrate's Wrap tier).
 inline constexpr std::string_view kWrapSetting = "wrap";
