@@ -83,6 +83,26 @@ TEST(QualityTable, ReadsTheAtlasRowOfTheWrapTermAsItsOwn) {
   EXPECT_NEAR(w.msPerPx, 1e-3, 1e-12);
 }
 
+TEST(QualityTable, NoOptionIsPricedBelowPlainLit) {
+  // The wrap row's times fall with the pixels (timing noise): its own line would have a negative
+  // slope and an intercept below lit's, 0 ms per object. It takes plain lit's line instead.
+  const char* atlas = R"({
+    "truth": {"frames": [{"frame": "rest", "organ_pixels": 1000}, {"frame": "close-up", "organ_pixels": 5000}]},
+    "results": [
+      {"method": "lit", "setting": "wrap", "frame": "rest", "ms": 1.8, "rel_rms": 0.3},
+      {"method": "lit", "setting": "wrap", "frame": "close-up", "ms": 1.5, "rel_rms": 0.35},
+      {"method": "lit", "setting": "default", "frame": "rest", "ms": 3.0, "rel_rms": 0.5},
+      {"method": "lit", "setting": "default", "frame": "close-up", "ms": 7.0, "rel_rms": 0.7}
+    ]})";
+  auto table = qualityTableFromAtlasJson(atlas);
+  ASSERT_TRUE(table) << table.error().message;
+  const QualityOption& w = table->options[std::size_t(table->find("lit", kWrapSetting))];
+  const QualityOption& l = table->options[std::size_t(table->find("lit", "default"))];
+  EXPECT_DOUBLE_EQ(w.fixedMs, l.fixedMs);
+  EXPECT_DOUBLE_EQ(w.msPerPx, l.msPerPx);
+  EXPECT_GT(w.msPerPx, 0.0);
+}
+
 TEST(QualityTable, RefusesAJsonWithoutResults) {
   auto table = qualityTableFromAtlasJson(R"({"truth": {}})");
   ASSERT_FALSE(table);
@@ -97,7 +117,7 @@ TEST(QualityTable, CommittedDefaultHasEveryMethodAndPositiveCosts) {
   for (const QualityOption& o : t.options) {
     methods.insert(o.method);
     const double ms = o.fixedMs + o.msPerPx * 2000.0;
-    EXPECT_TRUE(ms >= 0.0 && ms < 1e4) << o.method << " " << o.setting;
+    EXPECT_TRUE(ms > 0.0 && ms < 1e4) << o.method << " " << o.setting;
     if (o.method == "lit" && o.setting == "default") litMs = ms;
     dearestMs = std::max(dearestMs, ms);
     for (double e : o.relRms)
@@ -105,7 +125,9 @@ TEST(QualityTable, CommittedDefaultHasEveryMethodAndPositiveCosts) {
   }
   EXPECT_EQ(methods, (std::set<std::string>{"lit", "separable", "texture-space", "ray-march", "parallax"}));
   EXPECT_GE(t.find("lit", kWrapSetting), 0);
-  EXPECT_GT(dearestMs, litMs);  // the atlas's costs differ: some method costs more than lit
+  EXPECT_GT(dearestMs, litMs);              // the atlas's costs differ: some method costs more than lit
+  for (const QualityOption& o : t.options)  // and none less (NoOptionIsPricedBelowPlainLit)
+    EXPECT_GE(o.fixedMs + o.msPerPx * 2000.0, litMs) << o.method << " " << o.setting;
 }
 
 }  // namespace

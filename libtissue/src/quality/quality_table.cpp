@@ -156,6 +156,16 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
   if (table.options.empty())
     return Error{
         "quality table: the atlas JSON has no result on the rest, poked, close-up or grazing frames"};
+  // No option is cheaper than plain lit: every method rasterises and shades the organ's pixels at
+  // least once. A noisy fit (the wrap row's slope came out negative, its mean below lit's
+  // intercept) would otherwise price an option at 0 ms, and a free option is chosen everywhere.
+  if (const int lit = table.find("lit", "default"); lit >= 0) {
+    const QualityOption floor = table.options[std::size_t(lit)];
+    for (QualityOption& o : table.options) {
+      o.fixedMs = std::max(o.fixedMs, floor.fixedMs);
+      o.msPerPx = std::max(o.msPerPx, floor.msPerPx);
+    }
+  }
   if (settings.addWrap && table.find("lit", kWrapSetting) < 0) {
     const int lit = table.find("lit", "default");
     if (lit >= 0) {

@@ -144,23 +144,31 @@ struct Scene::Impl {
     return {};
   }
   /// The last frame's pass times as each organ's cost: a method's passes shared among its organs
-  /// by their predicted costs.
+  /// by their predicted costs, or by their footprints where one of them was predicted free (a
+  /// share of 0 would be learned as 0 ms and never corrected).
   void learnBudget(double frameMs) {
     if (budgetMs <= 0.0 || !controller || !renderer || budgetChoices.size() != organs.size()) return;
     const render::RenderTimings& t = renderer->lastTimings();
     const std::vector<double> perMethod = methodPassMs(t);
-    std::vector<double> predicted(perMethod.size(), 0.0);
+    const auto methodOf = [&](std::size_t i) { return std::size_t(render::shadingMethod(organs[i].method)); };
+    std::vector<double> predicted(perMethod.size(), 0.0), footprint(perMethod.size(), 0.0);
+    std::vector<bool> anyFree(perMethod.size(), false);
     std::vector<int> count(perMethod.size(), 0);
-    for (const Organ& o : organs) {
-      const auto m = std::size_t(render::shadingMethod(o.method));
-      predicted[m] += controller->choices()[std::size_t(&o - organs.data())].predictedMs;
-      ++count[m];
+    for (std::size_t i = 0; i < organs.size(); ++i) {
+      const double p = controller->choices()[i].predictedMs;
+      predicted[methodOf(i)] += p;
+      footprint[methodOf(i)] += std::max(0.0, budgetChoices[i].footprintPx);
+      if (!(p > 0.0)) anyFree[methodOf(i)] = true;
+      ++count[methodOf(i)];
     }
     std::vector<quality::CostSample> samples;
     for (std::size_t i = 0; i < organs.size(); ++i) {
-      const auto m = std::size_t(render::shadingMethod(organs[i].method));
-      const double p = controller->choices()[i].predictedMs;
-      const double share = predicted[m] > 0.0 ? p / predicted[m] : 1.0 / double(count[m]);
+      const std::size_t m = methodOf(i);
+      double share = 1.0 / double(count[m]);
+      if (!anyFree[m])
+        share = controller->choices()[i].predictedMs / predicted[m];
+      else if (footprint[m] > 0.0)
+        share = std::max(0.0, budgetChoices[i].footprintPx) / footprint[m];
       samples.push_back({i, perMethod[m] * share});
     }
     controller->observe(samples, frameMs);
