@@ -77,6 +77,33 @@ TEST(QualityController, PlanFitsTheBudget) {
   EXPECT_LT(loose.expectedError, 0.2);
 }
 
+// Nothing fits: the cheapest plan, but between options whose costs are within the headroom of
+// each other (one cost measured with noise) the one of lower error, and never one dearer than that.
+TEST(QualityController, WhenNothingFitsTheLeastErrorWithinNoiseOfTheCheapestPlan) {
+  QualityTable t;
+  t.options = {option("lit", "wrap", 0.60, 1.0, 1.0e-4),      // the cheapest by a hair, worse
+               option("lit", "default", 0.50, 1.0, 1.02e-4),  // 2 % dearer: within the noise
+               option("separable", "svd-7", 0.30, 3.0, 3e-4)};
+  ObjectView view;
+  view.footprintPx = 5000.0;
+  const std::vector<ObjectView> objs(3, view);
+  const auto costs = priors(t);
+  const Plan p = choosePlan(t, costs, 2.0, objs, kScreenPx, 1.0);  // below the overhead itself
+  EXPECT_FALSE(p.fits);
+  for (int o : p.option)
+    EXPECT_EQ(o, t.find("lit", "default"));
+  // The cheapest plan's cost at most x (1 + headroom): separable stays out, though its error is lowest.
+  double cheapest = 2.0;
+  for (const ObjectView& v : objs)
+    cheapest += costs[0].predictMs(v.footprintPx);
+  EXPECT_LE(p.predictedMs, cheapest * (1.0 + ControllerSettings{}.headroom) + 1e-9);
+  // Twice the per-pixel cost is not noise: the cheap option is kept.
+  t.options[1].msPerPx = 2e-4;
+  const Plan q = choosePlan(t, priors(t), 2.0, objs, kScreenPx, 1.0);
+  for (int o : q.option)
+    EXPECT_EQ(o, t.find("lit", "wrap"));
+}
+
 TEST(QualityController, MoreBudgetNeverGivesAHigherExpectedError) {
   const QualityTable t = table();
   const auto costs = priors(t);

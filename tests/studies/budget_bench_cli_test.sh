@@ -56,6 +56,15 @@ for run, r in zip(bench["controller"], results):
     assert len(run["plan_change_frames"]) <= run["plan_changes"], run
 for f in bench["fixed"]:
     assert f["first_frame_ms"] > 0, f
+# The best fixed setting that fits has its p95 within the budget itself; the one reported beside
+# it within 1.1 x the budget, never worse (it is chosen from more settings).
+p95 = {f["method"] + " " + f["setting"]: f["frame_ms_p95"] for f in bench["fixed"]}
+for r in results:
+    if r["fixed_best"]:
+        assert p95[r["fixed_best"]] <= r["budget_ms"], r
+        assert r["fixed_best_within_10_percent_rel_rms"] <= r["fixed_best_rel_rms"], r
+    if r["fixed_best_within_10_percent"]:
+        assert p95[r["fixed_best_within_10_percent"]] <= 1.1 * r["budget_ms"], r
 PY
 
 # Bad input: refused before any replay or truth, in one line.

@@ -65,6 +65,56 @@ double costOf(std::span<const CostModel> costs, int option, const ObjectView& v)
   return std::max(0.0, costs[std::size_t(option)].predictMs(std::max(0.0, v.footprintPx)));
 }
 
+bool objectsWithoutCandidate(const std::vector<std::vector<int>>& cand) {
+  return std::any_of(cand.begin(), cand.end(), [](const std::vector<int>& c) { return c.empty(); });
+}
+
+// The exact multiple-choice knapsack: the options (one of cand[i] per object) of least
+// sum w e^2 whose costs, rounded up to a grid, sum to at most `freeMs`; empty where none does.
+// best[i][k] = least sum w e^2 of objects < i within k grid units (rounded up, so a plan found
+// fits). Monotone in k, hence in the budget.
+std::vector<int> leastErrorWithin(const QualityTable& table, std::span<const CostModel> costs,
+                                  std::span<const ObjectView> objects,
+                                  const std::vector<std::vector<int>>& cand, double screenPx, double freeMs,
+                                  const ControllerSettings& s) {
+  const std::size_t n = objects.size();
+  if (!(freeMs >= 0.0)) return {};
+  // At most kMaxCostUnits grid units: a budget far above any cost (a host's "no limit") coarsens
+  // the grid instead of growing the table (bounded time and memory).
+  const double grid = std::max({s.costGridMs, 1e-4, freeMs / kMaxCostUnits});
+  const long K = long(std::floor(freeMs / grid + 1e-9));
+  const std::size_t cols = std::size_t(K) + 1;
+  std::vector<double> prev(cols, 0.0), next(cols);
+  std::vector<std::vector<int>> pick(n, std::vector<int>(cols, -1));
+  for (std::size_t i = 0; i < n; ++i) {
+    const ViewClass view = viewClassOf(objects[i], screenPx, s);
+    const double w = weightOf(objects[i]);
+    std::fill(next.begin(), next.end(), kInf);
+    for (int o : cand[i]) {
+      const long u = long(std::ceil(costOf(costs, o, objects[i]) / grid - 1e-9));
+      const double term = w * chargedSquaredError(table.options[std::size_t(o)], view, s);
+      for (long k = u; k < long(cols); ++k) {
+        const double v = prev[std::size_t(k - u)] + term;
+        // Ties go to the cheaper option (fewer units used), for a steady choice.
+        if (v < next[std::size_t(k)] - 1e-15) {
+          next[std::size_t(k)] = v;
+          pick[i][std::size_t(k)] = o;
+        }
+      }
+    }
+    std::swap(prev, next);
+  }
+  if (!std::isfinite(prev[std::size_t(K)])) return {};
+  std::vector<int> option(n, -1);
+  long k = K;
+  for (std::size_t i = n; i-- > 0;) {
+    const int o = pick[i][std::size_t(k)];
+    option[i] = o;
+    k -= long(std::ceil(costOf(costs, o, objects[i]) / grid - 1e-9));
+  }
+  return option;
+}
+
 }  // namespace
 
 MeshWork meshWorkOf(std::string_view method, bool hasNormalMap) {
@@ -155,61 +205,36 @@ Plan choosePlan(const QualityTable& table, std::span<const CostModel> costs, dou
   std::vector<std::vector<int>> cand(n);
   for (std::size_t i = 0; i < n; ++i)
     cand[i] = candidatesOf(table, objects[i], s);
-  const double free = budgetMs * (1.0 - s.headroom) - overheadMs;
-  // At most kMaxCostUnits grid units: a budget far above any cost (a host's "no limit") coarsens
-  // the grid instead of growing the table (bounded time and memory).
-  const double grid = std::max({s.costGridMs, 1e-4, free / kMaxCostUnits});
-  // Exact multiple-choice knapsack: best[i][k] = least sum w e^2 of objects < i within k grid
-  // units (costs rounded up, so a plan found fits). Monotone in k, hence in the budget.
-  const long K = free >= 0.0 ? long(std::floor(free / grid + 1e-9)) : -1;
-  std::vector<int> option(n, -1);
-  bool fits = K >= 0;
-  for (std::size_t i = 0; i < n && fits; ++i)
-    if (cand[i].empty()) fits = false;
-  if (fits) {
-    const std::size_t cols = std::size_t(K) + 1;
-    std::vector<double> prev(cols, 0.0), next(cols);
-    std::vector<std::vector<int>> pick(n, std::vector<int>(cols, -1));
+  const bool complete = !objectsWithoutCandidate(cand);
+  std::vector<int> option;
+  if (complete)
+    option = leastErrorWithin(table, costs, objects, cand, screenPx,
+                              budgetMs * (1.0 - s.headroom) - overheadMs, s);
+  const bool fits = !option.empty();
+  if (!fits && complete) {
+    // Nothing fits: the cheapest plan's cost, and within the headroom above it (the learned
+    // costs' own noise) the plan of least error. Each object's cheapest option alone would be
+    // picked by that noise among options that cost the same: plain lit or its wrap term.
+    double cheapest = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
-      const ViewClass view = viewClassOf(objects[i], screenPx, s);
-      const double w = weightOf(objects[i]);
-      std::fill(next.begin(), next.end(), kInf);
-      for (int o : cand[i]) {
-        const long u = long(std::ceil(costOf(costs, o, objects[i]) / grid - 1e-9));
-        const double term = w * chargedSquaredError(table.options[std::size_t(o)], view, s);
-        for (long k = u; k < long(cols); ++k) {
-          const double v = prev[std::size_t(k - u)] + term;
-          // Ties go to the cheaper option (fewer units used), for a steady choice.
-          if (v < next[std::size_t(k)] - 1e-15) {
-            next[std::size_t(k)] = v;
-            pick[i][std::size_t(k)] = o;
-          }
-        }
-      }
-      std::swap(prev, next);
+      double c = kInf;
+      for (int o : cand[i])
+        c = std::min(c, costOf(costs, o, objects[i]));
+      cheapest += c;
     }
-    if (std::isfinite(prev[std::size_t(K)])) {
-      long k = K;
-      for (std::size_t i = n; i-- > 0;) {
-        const int o = pick[i][std::size_t(k)];
-        option[i] = o;
-        k -= long(std::ceil(costOf(costs, o, objects[i]) / grid - 1e-9));
-      }
-    } else {
-      fits = false;
-    }
+    const double grid = std::max({s.costGridMs, 1e-4, 2.0 * cheapest / kMaxCostUnits});
+    option = leastErrorWithin(table, costs, objects, cand, screenPx,
+                              cheapest * (1.0 + s.headroom) + 2.0 * double(n) * grid, s);
   }
-  if (!fits) {  // nothing fits: each object's cheapest option
+  if (option.empty()) {  // an object without candidates (or the grid's rounding): each one's cheapest
+    option.assign(n, 0);
     for (std::size_t i = 0; i < n; ++i) {
       double best = kInf;
-      for (int o : cand[i]) {
-        const double c = costOf(costs, o, objects[i]);
-        if (c < best) {
+      for (int o : cand[i])
+        if (const double c = costOf(costs, o, objects[i]); c < best) {
           best = c;
           option[i] = o;
         }
-      }
-      if (option[i] < 0) option[i] = 0;
     }
   }
   Plan p = evaluatePlan(table, costs, overheadMs, objects, screenPx, std::move(option), budgetMs, s);

@@ -103,8 +103,9 @@ struct Plan {
 
 /// The plan of least expected error whose predicted cost fits `budgetMs` (x (1 - headroom)),
 /// with costs `costs` (one per table option) and `overheadMs` of the frame; objects below the
-/// footprint threshold take the wrap option. When nothing fits: each object's cheapest option,
-/// fits = false.
+/// footprint threshold take the wrap option. When nothing fits (fits = false): the plan of least
+/// error among those within `headroom` of the cheapest plan's cost (costs that close are one
+/// cost measured with noise: plain lit and its wrap term).
 Plan choosePlan(const QualityTable& table, std::span<const CostModel> costs, double overheadMs,
                 std::span<const ObjectView> objects, double screenPx, double budgetMs,
                 const ControllerSettings& settings = {});

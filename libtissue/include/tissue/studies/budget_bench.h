@@ -72,7 +72,13 @@ struct BudgetResult {
   double frameMsMedian = 0.0, frameMsP95 = 0.0;
   double relRms = 0.0, relRmsDebiased = 0.0;
   double fixedBestRelRms = 0.0, fixedBestRelRmsDebiased = 0.0;  ///< NaN when no fixed setting fits
-  std::string fixedBest;          ///< "method setting" of the best fixed setting that fits
+  /// "method setting" of the best fixed setting that fits: its p95 at most the budget, the
+  /// target the controller plans for (docs/DECISIONS.md, "A fixed setting fits when its p95 does")
+  std::string fixedBest;
+  /// The same with the controller's 10 % allowance (p95 <= 1.1 budget), reported beside it; NaN,
+  /// empty when none
+  double fixedBestWithinTenPercentRelRms = 0.0;
+  std::string fixedBestWithinTenPercent;
   bool withinTenPercent = false;  ///< frameMsP95 <= 1.1 budgetMs
   /// The controller's squared rel RMS minus the best fixed setting's, and its standard error from
   /// the truth's per-pixel noise (studies::errorDifference); NaN when no fixed setting fits.
