@@ -205,16 +205,13 @@ Plan choosePlan(const QualityTable& table, std::span<const CostModel> costs, dou
   std::vector<std::vector<int>> cand(n);
   for (std::size_t i = 0; i < n; ++i)
     cand[i] = candidatesOf(table, objects[i], s);
-  const bool complete = !objectsWithoutCandidate(cand);
   std::vector<int> option;
-  if (complete)
-    option = leastErrorWithin(table, costs, objects, cand, screenPx,
-                              budgetMs * (1.0 - s.headroom) - overheadMs, s);
-  const bool fits = !option.empty();
-  if (!fits && complete) {
-    // Nothing fits: the cheapest plan's cost, and within the headroom above it (the learned
-    // costs' own noise) the plan of least error. Each object's cheapest option alone would be
-    // picked by that noise among options that cost the same: plain lit or its wrap term.
+  bool fits = false;
+  if (!objectsWithoutCandidate(cand)) {
+    // The cheapest plan's cost first: where even it does not fit, the plan of least error within
+    // the headroom above it (the learned costs' own noise), not each object's cheapest option,
+    // which that noise picks among options of one cost (plain lit or its wrap term). One
+    // knapsack per frame either way.
     double cheapest = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
       double c = kInf;
@@ -222,9 +219,12 @@ Plan choosePlan(const QualityTable& table, std::span<const CostModel> costs, dou
         c = std::min(c, costOf(costs, o, objects[i]));
       cheapest += c;
     }
+    const double free = budgetMs * (1.0 - s.headroom) - overheadMs;
+    fits = cheapest <= free;
     const double grid = std::max({s.costGridMs, 1e-4, 2.0 * cheapest / kMaxCostUnits});
     option = leastErrorWithin(table, costs, objects, cand, screenPx,
-                              cheapest * (1.0 + s.headroom) + 2.0 * double(n) * grid, s);
+                              fits ? free : cheapest * (1.0 + s.headroom) + 2.0 * double(n) * grid, s);
+    fits = fits && !option.empty();
   }
   if (option.empty()) {  // an object without candidates (or the grid's rounding): each one's cheapest
     option.assign(n, 0);
