@@ -387,6 +387,44 @@ TEST(QualityController, AMeasuredSettingCalibratesItsUnmeasuredSiblings) {
               1.5 * (t.options[3].fixedMs + t.options[3].msPerPx * 5000.0), 1e-12);
 }
 
+// Options of one work (QualityOption::costClass: d'Eon's and the pre-integrated kernel at 11
+// taps) learn one cost: a sample of one is a sample of the other, so the plan chooses between
+// them by error and not by which one's measurements the machine's noise flattered.
+TEST(QualityController, OptionsOfOneCostClassLearnOneCost) {
+  QualityTable t;
+  t.options = {option("lit", "default", 0.50, 0.1, 1e-4), option("separable", "deon-11", 0.40, 0.8, 3e-4),
+               option("separable", "preintegrated-11", 0.35, 0.8, 3e-4)};
+  t.frameOverheadMs = 2.0;
+  t.options[1].costClass = t.options[2].costClass = 0;
+  t.costClasses = {"separable-11"};
+  ControllerSettings s;
+  s.unmeasuredCostFactor = 1.0;
+  auto objs = objects();
+  for (ObjectView& v : objs)
+    v.allowed = {1};  // deon-11 alone is drawn and measured, at 1.3 x its prior
+  objs[4].footprintPx = 1000.0;
+  const auto run = [&](const QualityTable& table) {
+    QualityController c(table, s);
+    simulate(
+        c, objs, 1000.0, 30, [&](int) { return table.frameOverheadMs; },
+        [](int, const ObjectChoice&, double ms) { return 1.3 * ms; });
+    return c;
+  };
+  const QualityController shared = run(t);
+  const CostModel& deon = shared.costs()[1];
+  const CostModel& pre = shared.costs()[2];
+  EXPECT_GT(deon.samples, 0);
+  EXPECT_EQ(pre.samples, deon.samples);
+  EXPECT_DOUBLE_EQ(pre.predictMs(5000.0), deon.predictMs(5000.0));
+  EXPECT_NEAR(deon.predictMs(5000.0), 1.3 * (0.8 + 3e-4 * 5000.0), 0.01);
+  // Without the class the sibling has never been measured: its own prior (here 1 x, calibrated
+  // by the method's measured ratio: planningCosts) stands.
+  QualityTable apart = t;
+  apart.options[1].costClass = apart.options[2].costClass = -1;
+  const QualityController alone = run(apart);
+  EXPECT_EQ(alone.costs()[2].samples, 0);
+}
+
 TEST(QualityController, LearnedCostConvergesToTheMeasuredCost) {
   // The prior is 3x off; the machine's cost is 1.5 ms + 4e-4 ms/px.
   CostModel m = costModelOf(option("separable", "x", 0.3, 0.5, 1.2e-3));

@@ -59,13 +59,13 @@ TEST(QualityTable, ReadsErrorsPerViewClassAndCostPriors) {
 
 TEST(QualityTable, ReadsTheAtlasRowOfTheWrapTermAsItsOwn) {
   // An atlas that scored lit with the wrap term (tissue-sim atlas's "lit wrap" row): the option
-  // takes that row's errors and cost, not plain lit's, and the frame's overhead stays plain lit's
-  // intercept.
+  // takes that row's errors, not plain lit's. Its cost is the lit class's (costClassKey: one
+  // shader, one more uniform): plain lit's line, whose intercept is the frame's overhead.
   const char* atlas = R"({
     "truth": {"frames": [{"frame": "rest", "organ_pixels": 1000}, {"frame": "close-up", "organ_pixels": 5000}]},
     "results": [
       {"method": "lit", "setting": "wrap", "frame": "rest", "ms": 3.5, "rel_rms": 0.3},
-      {"method": "lit", "setting": "wrap", "frame": "close-up", "ms": 7.5, "rel_rms": 0.35},
+      {"method": "lit", "setting": "wrap", "frame": "close-up", "ms": 5.5, "rel_rms": 0.35},
       {"method": "lit", "setting": "default", "frame": "rest", "ms": 3.0, "rel_rms": 0.5},
       {"method": "lit", "setting": "default", "frame": "close-up", "ms": 7.0, "rel_rms": 0.7}
     ]})";
@@ -76,27 +76,69 @@ TEST(QualityTable, ReadsTheAtlasRowOfTheWrapTermAsItsOwn) {
   ASSERT_GE(wrap, 0);
   ASSERT_GE(lit, 0);
   const QualityOption& w = table->options[std::size_t(wrap)];
+  const QualityOption& l = table->options[std::size_t(lit)];
   EXPECT_DOUBLE_EQ(w.relRms[std::size_t(ViewClass::Rest)], 0.3);
   EXPECT_DOUBLE_EQ(w.relRms[std::size_t(ViewClass::CloseUp)], 0.35);
+  EXPECT_EQ(w.costClass, l.costClass);
   EXPECT_NEAR(table->frameOverheadMs, 2.0, 1e-9);  // lit default: 2 ms + 1 ms per 1000 px
-  EXPECT_NEAR(w.fixedMs, 0.5, 1e-9);               // the wrap row: 2.5 ms + 1 ms per 1000 px
+  EXPECT_NEAR(w.fixedMs, 0.0, 1e-9);               // and the wrap row with it (its own: 0.5 ms per 1000 px)
   EXPECT_NEAR(w.msPerPx, 1e-3, 1e-12);
+  EXPECT_DOUBLE_EQ(l.msPerPx, w.msPerPx);
 }
 
-TEST(QualityTable, NoOptionIsPricedBelowPlainLit) {
-  // The wrap row's times fall with the pixels (timing noise): its own line would have a negative
-  // slope and an intercept below lit's, 0 ms per object. It takes plain lit's line instead.
+TEST(QualityTable, OptionsOfOneWorkShareOneCostLine) {
+  // The separable kernel models of one tap count run one shader with other weights: one cost
+  // class, one line fitted to all their rows (the d'Eon row's lone fast frame is noise, not a
+  // cheaper kernel). Another tap count is another class.
+  EXPECT_EQ(costClassKey("separable", "deon-11"), "separable-11");
+  EXPECT_EQ(costClassKey("separable", "preintegrated-11"), "separable-11");
+  EXPECT_EQ(costClassKey("lit", "wrap"), costClassKey("lit", "default"));
+  EXPECT_NE(costClassKey("ray-march", "adaptive-100"), costClassKey("ray-march", "100"));
+  EXPECT_NE(costClassKey("texture-space", "6g-opt"), costClassKey("texture-space", "6g-plain"));
   const char* atlas = R"({
     "truth": {"frames": [{"frame": "rest", "organ_pixels": 1000}, {"frame": "close-up", "organ_pixels": 5000}]},
     "results": [
-      {"method": "lit", "setting": "wrap", "frame": "rest", "ms": 1.8, "rel_rms": 0.3},
-      {"method": "lit", "setting": "wrap", "frame": "close-up", "ms": 1.5, "rel_rms": 0.35},
+      {"method": "lit", "setting": "default", "frame": "rest", "ms": 3.0, "rel_rms": 0.5},
+      {"method": "lit", "setting": "default", "frame": "close-up", "ms": 7.0, "rel_rms": 0.7},
+      {"method": "separable", "setting": "deon-11", "frame": "rest", "ms": 3.5, "rel_rms": 0.45},
+      {"method": "separable", "setting": "deon-11", "frame": "close-up", "ms": 10.0, "rel_rms": 0.6},
+      {"method": "separable", "setting": "preintegrated-11", "frame": "rest", "ms": 4.5, "rel_rms": 0.4},
+      {"method": "separable", "setting": "preintegrated-11", "frame": "close-up", "ms": 12.0, "rel_rms": 0.5},
+      {"method": "separable", "setting": "preintegrated-25", "frame": "rest", "ms": 6.0, "rel_rms": 0.38},
+      {"method": "separable", "setting": "preintegrated-25", "frame": "close-up", "ms": 16.0, "rel_rms": 0.48}
+    ]})";
+  auto table = qualityTableFromAtlasJson(atlas);
+  ASSERT_TRUE(table) << table.error().message;
+  const QualityOption& d = table->options[std::size_t(table->find("separable", "deon-11"))];
+  const QualityOption& p = table->options[std::size_t(table->find("separable", "preintegrated-11"))];
+  const QualityOption& q = table->options[std::size_t(table->find("separable", "preintegrated-25"))];
+  EXPECT_EQ(d.costClass, p.costClass);
+  EXPECT_NE(d.costClass, q.costClass);
+  ASSERT_GE(d.costClass, 0);
+  EXPECT_EQ(table->costClasses[std::size_t(d.costClass)], "separable-11");
+  // Both rows' mean line: 4 ms at 1000 px, 11 ms at 5000 px (2.25 ms + 1.75e-3 ms/px, less lit's
+  // intercept 2 ms); each row alone would be 1.875 + 1.625e-3 and 2.625 + 1.875e-3.
+  EXPECT_DOUBLE_EQ(d.fixedMs, p.fixedMs);
+  EXPECT_DOUBLE_EQ(d.msPerPx, p.msPerPx);
+  EXPECT_NEAR(d.fixedMs, 0.25, 1e-9);
+  EXPECT_NEAR(d.msPerPx, 1.75e-3, 1e-12);
+  EXPECT_NEAR(q.msPerPx, 2.5e-3, 1e-12);  // its own line
+}
+
+TEST(QualityTable, NoOptionIsPricedBelowPlainLit) {
+  // The separable row's times fall with the pixels (timing noise): its own line would have a
+  // negative slope and an intercept below lit's, 0 ms per object. It takes plain lit's line instead.
+  const char* atlas = R"({
+    "truth": {"frames": [{"frame": "rest", "organ_pixels": 1000}, {"frame": "close-up", "organ_pixels": 5000}]},
+    "results": [
+      {"method": "separable", "setting": "svd-7", "frame": "rest", "ms": 1.8, "rel_rms": 0.3},
+      {"method": "separable", "setting": "svd-7", "frame": "close-up", "ms": 1.5, "rel_rms": 0.35},
       {"method": "lit", "setting": "default", "frame": "rest", "ms": 3.0, "rel_rms": 0.5},
       {"method": "lit", "setting": "default", "frame": "close-up", "ms": 7.0, "rel_rms": 0.7}
     ]})";
   auto table = qualityTableFromAtlasJson(atlas);
   ASSERT_TRUE(table) << table.error().message;
-  const QualityOption& w = table->options[std::size_t(table->find("lit", kWrapSetting))];
+  const QualityOption& w = table->options[std::size_t(table->find("separable", "svd-7"))];
   const QualityOption& l = table->options[std::size_t(table->find("lit", "default"))];
   EXPECT_DOUBLE_EQ(w.fixedMs, l.fixedMs);
   EXPECT_DOUBLE_EQ(w.msPerPx, l.msPerPx);

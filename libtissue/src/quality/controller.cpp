@@ -360,6 +360,11 @@ void QualityController::observe(std::span<const CostSample> samples, double fram
     const int o = m_choices[c.object].option;
     const double px = m_lastObjects[c.object].footprintPx;
     observeCost(m_costs[std::size_t(o)], px, c.ms, m_settings.learningRate);
+    // One work, one cost (QualityOption::costClass): a sample of deon-11 is one of
+    // preintegrated-11 too, so that options of one cost are chosen by error, not by their noise.
+    if (const int cls = m_table.options[std::size_t(o)].costClass; cls >= 0)
+      for (std::size_t sib = 0; sib < m_costs.size(); ++sib)
+        if (m_table.options[sib].costClass == cls) m_costs[sib] = m_costs[std::size_t(o)];
     objectsMs += c.ms;
     // Measured over prior (planningCosts), per method and over all.
     const QualityOption& opt = m_table.options[std::size_t(o)];

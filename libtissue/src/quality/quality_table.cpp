@@ -55,6 +55,14 @@ std::optional<ViewClass> viewClassOfFrame(std::string_view frame) {
   return std::nullopt;
 }
 
+std::string costClassKey(std::string_view method, std::string_view setting) {
+  if (method == "lit") return "lit";
+  if (method == "separable")
+    if (const std::size_t dash = setting.rfind('-'); dash != std::string_view::npos)
+      return "separable-" + std::string(setting.substr(dash + 1));
+  return std::string(method) + " " + std::string(setting);
+}
+
 int QualityTable::find(std::string_view method, std::string_view setting) const {
   for (std::size_t i = 0; i < options.size(); ++i)
     if (options[i].method == method && options[i].setting == setting) return int(i);
@@ -115,12 +123,26 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
     a.has[v] = true;
   }
   QualityTable table;
+  // One cost line per cost class, fitted to all its options' samples (one work measured more
+  // often: the atlas's single frames of one setting vary by 2x on a shared machine). The lit
+  // class keeps the plain lit row alone where the atlas has it: its intercept is the frame's
+  // overhead, the reference every option is priced above, and the wrap row's noise would flatten
+  // it (a line of no slope prices lit at 0 ms).
+  const std::pair<std::string, std::string> plainLit{"lit", "default"};
+  std::map<std::string, std::vector<std::pair<double, double>>> classSamples;
+  for (const auto& id : order) {
+    const std::string key = costClassKey(id.first, id.second);
+    if (key == costClassKey(plainLit.first, plainLit.second) && id != plainLit && acc.count(plainLit))
+      continue;
+    auto& samples = classSamples[key];
+    samples.insert(samples.end(), acc[id].pxMs.begin(), acc[id].pxMs.end());
+  }
   std::map<std::pair<std::string, std::string>, std::pair<double, double>> lines;
   for (const auto& id : order)
-    lines[id] = fitLine(acc[id].pxMs);
+    lines[id] = fitLine(classSamples[costClassKey(id.first, id.second)]);
   // The plain lit row's intercept (an atlas that scores the wrap term has two lit rows; without a
   // default one, the lowest lit intercept).
-  if (const auto plain = lines.find({"lit", "default"}); plain != lines.end()) {
+  if (const auto plain = lines.find(plainLit); plain != lines.end()) {
     table.frameOverheadMs = std::max(0.0, plain->second.first);
   } else {
     bool first = true;
@@ -151,6 +173,10 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
     }
     o.fixedMs = std::max(0.0, lines[id].first - table.frameOverheadMs);
     o.msPerPx = lines[id].second;
+    const std::string key = costClassKey(o.method, o.setting);
+    const auto known = std::find(table.costClasses.begin(), table.costClasses.end(), key);
+    o.costClass = int(known - table.costClasses.begin());
+    if (known == table.costClasses.end()) table.costClasses.push_back(key);
     table.options.push_back(std::move(o));
   }
   if (table.options.empty())

@@ -145,7 +145,8 @@ class QualityController {
   const std::vector<ObjectChoice>& update(std::span<const ObjectView> objects, double screenPx,
                                           double budgetMs);
   /// The measured costs of the frame that used the last update's choice: each object's share of
-  /// its passes, and the whole frame (ms), whose rest is the overhead. On a frame where objects
+  /// its passes, and the whole frame (ms), whose rest is the overhead. A sample teaches every
+  /// option of its option's cost class (QualityOption::costClass). On a frame where objects
   /// switched option, their samples and the overhead are not learned from: what the frame took
   /// beyond the plan's prediction is the switched options' one-off cost (an EMA per option),
   /// which a later switch must fit in the budget beside the new plan. Without this, a switch's

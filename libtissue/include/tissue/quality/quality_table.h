@@ -44,7 +44,16 @@ struct QualityOption {
   std::array<double, kViewClassCount> squaredStderr{};
   double fixedMs = 0.0;  ///< ms, the cost prior's part per object
   double msPerPx = 0.0;  ///< ms per covered pixel, the cost prior's part per pixel
+  /// The options that run the same passes with other constants share one cost (costClassKey):
+  /// the index of this option's class in QualityTable::costClasses (-1: a class of its own).
+  int costClass = -1;
 };
+
+/// The cost class of an option: lit and its wrap term are one shader with one more uniform, and
+/// the separable kernel models of one tap count are one shader with other weights (Jimenez et
+/// al. 2015: the kernel is a uniform array; Freude's models change its values, not its length), so
+/// they cost the same. "lit"; "separable-<taps>"; otherwise "<method> <setting>".
+std::string costClassKey(std::string_view method, std::string_view setting);
 
 /// The options and where they came from.
 struct QualityTable {
@@ -53,6 +62,8 @@ struct QualityTable {
   /// row's intercept, which the options' fixedMs are measured above.
   double frameOverheadMs = 0.0;
   std::string source;  ///< what it was read from, for reports
+  /// The cost classes' keys (costClassKey), indexed by QualityOption::costClass.
+  std::vector<std::string> costClasses;
   /// The option named (method, setting), or -1.
   int find(std::string_view method, std::string_view setting) const;
 };
