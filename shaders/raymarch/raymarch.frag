@@ -9,7 +9,7 @@
 //   L = f_r (N.L) E                                            outer surface (common/specular.glsl)
 //     + T(N.V) [ pi u_radianceScale' L_ss(T(N.L) per light)    single scattering (eq. 1-5)
 //              + sum_l R_ms T(N.L)/T0 (N.L) E_l/pi / T0 ]      multiple scattering
-// with T(mu) = 1 - F(mu) the Schlick transmittance and T0 = T(1): the dipole's R_ms is per
+// with T(mu) = 1 - F(mu) the dielectric's transmittance and T0 = T(1): the dipole's R_ms is per
 // incident light at normal incidence, which the two T/T0 ratios carry to other angles; at
 // normal light and view the sum is exactly R_ms + pi L_ss / E (optics::semiInfiniteReflectance).
 // Variants: TISSUE_ADAPTIVE (per-pixel sample count from view angle, layer depth and screen
@@ -34,11 +34,11 @@ uniform float u_sigmaMin;         // smallest extinction of any layer and channe
 uniform float u_ior;              // relative index of the tissue; 1: no boundary
 uniform bool u_specularOn;        // the outer surface's Fresnel-weighted lobe
 
-// Schlick's Fresnel reflectance for cosine mu with normal-incidence reflectance F0.
-float schlickFresnel(float mu, float F0) {
-  float m = 1.0 - clamp(mu, 0.0, 1.0);
-  return F0 + (1.0 - F0) * m * m * m * m * m;
-}
+// The boundary's transmittance T(mu) = 1 - F(mu) for cosine mu: the exact unpolarised dielectric
+// Fresnel of index u_ior (Walter et al. 2007 eq. 22, common/specular.glsl), as the optics that
+// derive the layers' albedos (optics/reflectance.cpp) and the path-traced truth use, and as the
+// painted methods' exit weight does (boundaryWeight); not Schlick's approximation.
+float transmittance(float mu) { return 1.0 - dielectricFresnel(clamp(mu, 0.0, 1.0), u_ior); }
 
 // Adaptive quality, as subsurface::adaptiveMarch: march only as deep as light returns from
 // (round-trip transmittance above u_cutoff), as finely as depth and footprint need.
@@ -74,7 +74,7 @@ void main() {
   vec3 N = f.Np;
   float NdotV = max(dot(N, f.wo), 0.0);
   float T0 = 1.0 - F0;
-  float Tv = boundary ? 1.0 - schlickFresnel(NdotV, F0) : 1.0;
+  float Tv = boundary ? transmittance(NdotV) : 1.0;
   float weight[MAX_LIGHTS];
   vec3 irradianceIn = vec3(0.0), specular = vec3(0.0);
   for (int l = 0; l < MAX_LIGHTS; ++l) {
@@ -82,7 +82,7 @@ void main() {
     if (l >= u_lightCount || !boundary) continue;
     vec3 L = lightDirection(l, f.P);
     float NdotL = max(dot(N, L), 0.0);
-    weight[l] = 1.0 - schlickFresnel(NdotL, F0);
+    weight[l] = transmittance(NdotL);
     irradianceIn += weight[l] / T0 * NdotL * u_lightRadiance[l];
     // The outer surface's microfacet reflection, every method's (common/specular.glsl).
     if (u_specularOn) specular += surfaceSpecular(N, L, f.wo, F0, u_shininess) * u_lightRadiance[l];
