@@ -34,12 +34,6 @@ uniform float u_sigmaMin;         // smallest extinction of any layer and channe
 uniform float u_ior;              // relative index of the tissue; 1: no boundary
 uniform bool u_specularOn;        // the outer surface's Fresnel-weighted lobe
 
-// The boundary's transmittance T(mu) = 1 - F(mu) for cosine mu: the exact unpolarised dielectric
-// Fresnel of index u_ior (Walter et al. 2007 eq. 22, common/specular.glsl), as the optics that
-// derive the layers' albedos (optics/reflectance.cpp) and the path-traced truth use, and as the
-// painted methods' exit weight does (boundaryWeight); not Schlick's approximation.
-float transmittance(float mu) { return 1.0 - dielectricFresnel(clamp(mu, 0.0, 1.0), u_ior); }
-
 // Adaptive quality, as subsurface::adaptiveMarch: march only as deep as light returns from
 // (round-trip transmittance above u_cutoff), as finely as depth and footprint need.
 int adaptiveSamples(inout Frame f) {
@@ -74,7 +68,10 @@ void main() {
   vec3 N = f.Np;
   float NdotV = max(dot(N, f.wo), 0.0);
   float T0 = 1.0 - F0;
-  float Tv = boundary ? transmittance(NdotV) : 1.0;
+  // The boundary's transmittances T(mu) = T0 x boundaryWeight(mu): the exact dielectric Fresnel
+  // (Walter et al. 2007 eq. 22, common/specular.glsl) that the optics deriving the layers' albedos
+  // (optics/reflectance.cpp), the path-traced truth and the painted methods' exit weight use.
+  float Tv = boundary ? T0 * boundaryWeight(NdotV, F0) : 1.0;
   float weight[MAX_LIGHTS];
   vec3 irradianceIn = vec3(0.0), specular = vec3(0.0);
   for (int l = 0; l < MAX_LIGHTS; ++l) {
@@ -82,7 +79,7 @@ void main() {
     if (l >= u_lightCount || !boundary) continue;
     vec3 L = lightDirection(l, f.P);
     float NdotL = max(dot(N, L), 0.0);
-    weight[l] = transmittance(NdotL);
+    weight[l] = T0 * boundaryWeight(NdotL, F0);
     irradianceIn += weight[l] / T0 * NdotL * u_lightRadiance[l];
     // The outer surface's microfacet reflection, every method's (common/specular.glsl).
     if (u_specularOn) specular += surfaceSpecular(N, L, f.wo, F0, u_shininess) * u_lightRadiance[l];

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <set>
+#include <string>
 
 namespace tissue::quality {
 namespace {
@@ -25,6 +26,18 @@ const char* kAtlas = R"({
     {"method": "ray-march", "setting": "50", "frame": "close-up", "ms": 54.0, "rel_rms": 0.3},
     {"method": "ray-march", "setting": "50", "frame": "backlit", "ms": 9.0, "rel_rms": 0.9}
   ]})";
+
+// An atlas of the rest (1000 px) and close-up (5000 px) frames: plain lit at 2 ms + 1 ms per
+// 1000 px (the frame's overhead is its intercept), then `rows` (JSON result objects).
+std::string twoFrameAtlas(const std::string& rows) {
+  return R"({"truth": {"frames": [{"frame": "rest", "organ_pixels": 1000},
+                                  {"frame": "close-up", "organ_pixels": 5000}]},
+             "results": [
+      {"method": "lit", "setting": "default", "frame": "rest", "ms": 3.0, "rel_rms": 0.5},
+      {"method": "lit", "setting": "default", "frame": "close-up", "ms": 7.0, "rel_rms": 0.7},
+)" + rows +
+         "]}";
+}
 
 TEST(QualityTable, ReadsErrorsPerViewClassAndCostPriors) {
   auto table = qualityTableFromAtlasJson(kAtlas);
@@ -61,14 +74,9 @@ TEST(QualityTable, ReadsTheAtlasRowOfTheWrapTermAsItsOwn) {
   // An atlas that scored lit with the wrap term (tissue-sim atlas's "lit wrap" row): the option
   // takes that row's errors, not plain lit's. Its cost is the lit class's (costClassKey: one
   // shader, one more uniform): plain lit's line, whose intercept is the frame's overhead.
-  const char* atlas = R"({
-    "truth": {"frames": [{"frame": "rest", "organ_pixels": 1000}, {"frame": "close-up", "organ_pixels": 5000}]},
-    "results": [
+  const std::string atlas = twoFrameAtlas(R"(
       {"method": "lit", "setting": "wrap", "frame": "rest", "ms": 3.5, "rel_rms": 0.3},
-      {"method": "lit", "setting": "wrap", "frame": "close-up", "ms": 5.5, "rel_rms": 0.35},
-      {"method": "lit", "setting": "default", "frame": "rest", "ms": 3.0, "rel_rms": 0.5},
-      {"method": "lit", "setting": "default", "frame": "close-up", "ms": 7.0, "rel_rms": 0.7}
-    ]})";
+      {"method": "lit", "setting": "wrap", "frame": "close-up", "ms": 5.5, "rel_rms": 0.35})");
   auto table = qualityTableFromAtlasJson(atlas);
   ASSERT_TRUE(table) << table.error().message;
   EXPECT_EQ(table->options.size(), 2u);  // nothing added: the atlas has the row
@@ -95,18 +103,13 @@ TEST(QualityTable, OptionsOfOneWorkShareOneCostLine) {
   EXPECT_EQ(costClassKey("lit", "wrap"), costClassKey("lit", "default"));
   EXPECT_NE(costClassKey("ray-march", "adaptive-100"), costClassKey("ray-march", "100"));
   EXPECT_NE(costClassKey("texture-space", "6g-opt"), costClassKey("texture-space", "6g-plain"));
-  const char* atlas = R"({
-    "truth": {"frames": [{"frame": "rest", "organ_pixels": 1000}, {"frame": "close-up", "organ_pixels": 5000}]},
-    "results": [
-      {"method": "lit", "setting": "default", "frame": "rest", "ms": 3.0, "rel_rms": 0.5},
-      {"method": "lit", "setting": "default", "frame": "close-up", "ms": 7.0, "rel_rms": 0.7},
+  const std::string atlas = twoFrameAtlas(R"(
       {"method": "separable", "setting": "deon-11", "frame": "rest", "ms": 3.5, "rel_rms": 0.45},
       {"method": "separable", "setting": "deon-11", "frame": "close-up", "ms": 10.0, "rel_rms": 0.6},
       {"method": "separable", "setting": "preintegrated-11", "frame": "rest", "ms": 4.5, "rel_rms": 0.4},
       {"method": "separable", "setting": "preintegrated-11", "frame": "close-up", "ms": 12.0, "rel_rms": 0.5},
       {"method": "separable", "setting": "preintegrated-25", "frame": "rest", "ms": 6.0, "rel_rms": 0.38},
-      {"method": "separable", "setting": "preintegrated-25", "frame": "close-up", "ms": 16.0, "rel_rms": 0.48}
-    ]})";
+      {"method": "separable", "setting": "preintegrated-25", "frame": "close-up", "ms": 16.0, "rel_rms": 0.48})");
   auto table = qualityTableFromAtlasJson(atlas);
   ASSERT_TRUE(table) << table.error().message;
   const QualityOption& d = table->options[std::size_t(table->find("separable", "deon-11"))];
@@ -128,14 +131,9 @@ TEST(QualityTable, OptionsOfOneWorkShareOneCostLine) {
 TEST(QualityTable, NoOptionIsPricedBelowPlainLit) {
   // The separable row's times fall with the pixels (timing noise): its own line would have a
   // negative slope and an intercept below lit's, 0 ms per object. It takes plain lit's line instead.
-  const char* atlas = R"({
-    "truth": {"frames": [{"frame": "rest", "organ_pixels": 1000}, {"frame": "close-up", "organ_pixels": 5000}]},
-    "results": [
+  const std::string atlas = twoFrameAtlas(R"(
       {"method": "separable", "setting": "svd-7", "frame": "rest", "ms": 1.8, "rel_rms": 0.3},
-      {"method": "separable", "setting": "svd-7", "frame": "close-up", "ms": 1.5, "rel_rms": 0.35},
-      {"method": "lit", "setting": "default", "frame": "rest", "ms": 3.0, "rel_rms": 0.5},
-      {"method": "lit", "setting": "default", "frame": "close-up", "ms": 7.0, "rel_rms": 0.7}
-    ]})";
+      {"method": "separable", "setting": "svd-7", "frame": "close-up", "ms": 1.5, "rel_rms": 0.35})");
   auto table = qualityTableFromAtlasJson(atlas);
   ASSERT_TRUE(table) << table.error().message;
   const QualityOption& w = table->options[std::size_t(table->find("separable", "svd-7"))];
