@@ -164,10 +164,13 @@ Result<void> applyBudget(Viewer& v, int width, int height) {
 
 void learnBudget(Viewer& v, double frameMs) {
   if (!v.controller || !v.budgetChoice || !v.renderer) return;
-  const auto perMethod = scene::methodPassMs(v.renderer->lastTimings());
-  const auto m = std::size_t(render::shadingMethod(v.scene.objects[0].method));
-  const quality::CostSample sample{0, perMethod[m]};
-  v.controller->observe({&sample, 1}, frameMs);
+  std::vector<double> weights(v.scene.objects.size(), 0.0);
+  weights[0] = 1.0;  // the organ; an instrument drawn in its pass is overhead
+  const auto costs = scene::framePassCosts(v.renderer->lastTimings(), weights);
+  const auto m = render::shadingMethod(v.scene.objects[0].method);
+  const quality::CostSample sample{0, costs.objectMs[0]};
+  const quality::PassSample pass{std::string(render::shadingMethodName(m)), costs.methodMs[std::size_t(m)]};
+  v.controller->observe({&sample, 1}, {&pass, 1}, frameMs);
 }
 
 Result<void> resetLoop(Viewer& v) {

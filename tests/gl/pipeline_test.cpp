@@ -71,10 +71,22 @@ TEST_P(PipelineTest, TimingsListEveryPassInOrder) {
   for (const auto& p : renderer->lastTimings().passes) {
     names.push_back(p.name);
     EXPECT_GE(p.cpuMs, 0.0) << p.name;
+    EXPECT_EQ(p.object, -1) << p.name << ": no pass here is one object's alone";
   }
   const std::vector<std::string> expected = {"shadow:0",  "shadow:1", "clear",   "lit",
                                              "composite", "tonemap",  "readback"};
   EXPECT_EQ(names, expected);
+  // The lit pass draws both objects: each one's issue time, in draw order, within the pass's.
+  const render::PassTiming* lit = renderer->lastTimings().find("lit");
+  ASSERT_NE(lit, nullptr);
+  ASSERT_EQ(lit->issued.size(), 2u);
+  double issued = 0.0;
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(lit->issued[i].first, int(i));
+    EXPECT_GE(lit->issued[i].second, 0.0);
+    issued += lit->issued[i].second;
+  }
+  EXPECT_LE(issued, lit->cpuMs + 1e-9);
   EXPECT_NE(renderer->lastTimings().find("lit"), nullptr);
   EXPECT_EQ(renderer->lastTimings().find("separable:blur-x"), nullptr);
 }

@@ -249,12 +249,20 @@ TEST_P(SeparableTest, TimingsListEverySeparablePass) {
   std::get<render::SeparableSettings>(scene.objects[0].method).transmittance = {{1, 1, 1, 0}, {0, 0, 0, 10}};
   ASSERT_TRUE(renderer->renderImage(scene, 128, 128));
   std::vector<std::string> names;
-  for (const auto& p : renderer->lastTimings().passes)
+  std::vector<std::vector<int>> drawn;  // each pass's objects (PassTiming::issued)
+  for (const auto& p : renderer->lastTimings().passes) {
     names.push_back(p.name);
+    drawn.emplace_back();
+    for (const auto& [object, ms] : p.issued)
+      drawn.back().push_back(object);
+  }
   const std::vector<std::string> expected = {
       "shadow:0",  "clear",   "lit",     "separable:geometry", "separable:blur-x", "separable:blur-y",
       "composite", "tonemap", "readback"};
   EXPECT_EQ(names, expected);
+  // The geometry passes draw their objects (object 1 lit, object 0 separable); the screen-space
+  // blurs draw none: they are the method's, paid once whatever its objects.
+  EXPECT_EQ(drawn, (std::vector<std::vector<int>>{{}, {}, {1}, {0}, {}, {}, {}, {}, {}}));
   // A kernel that is empty, or has an empty component, is an Error naming the object.
   auto& settings = std::get<render::SeparableSettings>(scene.objects[0].method);
   settings.components.push_back({});

@@ -444,6 +444,114 @@ TEST(QualityController, LearnedCostConvergesToTheMeasuredCost) {
   EXPECT_NEAR(fixed.predictMs(5000.0), 3.0, 0.15);
 }
 
+// A method's passes of no object (separable's screen-space blurs) are paid once per plan that
+// uses the method, whatever the number of its objects: the plan is the exact optimum of that
+// cost, checked against every assignment of options to objects.
+TEST(QualityController, AMethodsOwnPassesArePaidOncePerPlan) {
+  const QualityTable t = table();
+  const auto costs = priors(t);
+  // Separable's blurs 4 ms, texture space's copy 1 ms; the others have none.
+  std::vector<double> pass(t.options.size(), 0.0);
+  for (std::size_t o = 0; o < t.options.size(); ++o) {
+    if (t.options[o].method == "separable") pass[o] = 4.0;
+    if (t.options[o].method == "texture-space") pass[o] = 1.0;
+  }
+  std::vector<ObjectView> objs(4);
+  objs[0].footprintPx = 20000;
+  objs[1].footprintPx = 5000;
+  objs[2].footprintPx = 2500;
+  objs[3].footprintPx = 1200;
+  const ControllerSettings s;
+  const std::size_t n = objs.size(), k = t.options.size();
+  const auto predicted = [&](const std::vector<int>& o) {
+    double ms = t.frameOverheadMs;
+    std::vector<std::string> used;
+    for (std::size_t i = 0; i < n; ++i) {
+      ms += costs[std::size_t(o[i])].predictMs(objs[i].footprintPx);
+      const std::string& m = t.options[std::size_t(o[i])].method;
+      if (std::find(used.begin(), used.end(), m) == used.end()) {
+        used.push_back(m);
+        ms += pass[std::size_t(o[i])];
+      }
+    }
+    return ms;
+  };
+  int separableShared = 0;
+  for (double budget = 4.0; budget < 120.0; budget *= 1.17) {
+    const Plan p = choosePlan(t, costs, t.frameOverheadMs, objs, kScreenPx, budget, s, pass);
+    ASSERT_EQ(p.option.size(), n);
+    EXPECT_NEAR(p.predictedMs, predicted(p.option), 1e-9) << "each method's passes once";
+    const double free = budget * (1.0 - s.headroom);
+    // Every assignment: the least error within the budget, and within it less the grid's
+    // rounding (one grid step per object).
+    double best = 1e30, bestWithSlack = 1e30;
+    std::vector<int> o(n, 0);
+    for (std::size_t code = 0; code < std::size_t(std::pow(double(k), double(n))); ++code) {
+      std::size_t c = code;
+      for (std::size_t i = 0; i < n; ++i, c /= k)
+        o[i] = int(c % k);
+      const double ms = predicted(o);
+      const double e =
+          evaluatePlan(t, costs, t.frameOverheadMs, objs, kScreenPx, o, budget, s, pass).expectedError;
+      if (ms <= free) best = std::min(best, e);
+      if (ms <= free - double(n) * s.costGridMs) bestWithSlack = std::min(bestWithSlack, e);
+    }
+    if (best > 1e29) {
+      EXPECT_FALSE(p.fits) << budget;
+      continue;
+    }
+    ASSERT_TRUE(p.fits) << budget;
+    EXPECT_LE(p.predictedMs, free + 1e-9) << budget;
+    EXPECT_GE(p.expectedError, best - 1e-12) << budget;
+    EXPECT_LE(p.expectedError, bestWithSlack + 1e-12) << budget;
+    int separable = 0;
+    for (int x : p.option)
+      separable += t.options[std::size_t(x)].method == "separable";
+    if (separable >= 2) ++separableShared;
+  }
+  EXPECT_GT(separableShared, 0) << "some budget puts several objects under one separable pass";
+}
+
+// The controller learns a method's own passes from its pass samples, apart from its objects'
+// costs, and charges them once: two separable objects are predicted at one pass plus two objects.
+TEST(QualityController, LearnsAMethodsOwnPassesApartFromItsObjects) {
+  QualityTable t;
+  t.options = {option("lit", "default", 0.50, 0.5, 1e-4),
+               option("separable", "preintegrated-7", 0.30, 0.5, 1e-4)};
+  t.frameOverheadMs = 1.0;
+  ControllerSettings s;
+  s.tailZ = 0.0;
+  QualityController c(t, s);
+  std::vector<ObjectView> objs(2);
+  objs[0].footprintPx = 8000;
+  objs[1].footprintPx = 4000;
+  const double objectMs = 0.2, passMs = 5.0;  // this machine: the blurs cost, the draws hardly
+  for (int f = 0; f < 80; ++f) {
+    const auto& ch = c.update(objs, kScreenPx, 100.0);
+    std::vector<CostSample> samples;
+    double frame = 1.0;
+    bool anySeparable = false;
+    for (std::size_t i = 0; i < ch.size(); ++i) {
+      samples.push_back({i, objectMs});
+      frame += objectMs;
+      anySeparable = anySeparable || ch[i].method == "separable";
+    }
+    std::vector<PassSample> passes;
+    if (anySeparable) {
+      passes.push_back({"separable", passMs});
+      frame += passMs;
+    }
+    c.observe(samples, passes, frame);
+  }
+  for (const auto& ch : c.choices())
+    EXPECT_EQ(ch.method, "separable") << "the budget fits both";
+  const auto pass = c.planningPassMs();
+  EXPECT_NEAR(pass[1], passMs, 1e-6);
+  EXPECT_NEAR(pass[0], 0.0, 1e-12) << "lit was never measured with passes of its own";
+  EXPECT_NEAR(c.plan().predictedMs, 1.0 + passMs + 2 * objectMs, 0.05) << "the pass once, not per object";
+  EXPECT_NEAR(c.overheadMs(), 1.0, 0.05);
+}
+
 TEST(QualityController, MeshWorkFollowsTheMethod) {
   EXPECT_FALSE(meshWorkOf("lit", false).planes);
   EXPECT_FALSE(meshWorkOf("lit", false).tangents);

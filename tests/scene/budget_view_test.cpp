@@ -88,6 +88,48 @@ OrganAssets cubeOrgan(float a, MaterialLayer layer) {
   return o;
 }
 
+// What the controller learns from a frame: an object's own passes are its; in a pass that draws
+// several objects each has its issue time and a share of the rest by weight; a method's passes of
+// no object (separable's blurs) are the method's, once.
+TEST(BudgetView, FramePassCostsGiveEachObjectItsPassesAndDrawsAndEachMethodItsOwn) {
+  const auto pass = [](std::string name, double ms, int object = -1,
+                       std::vector<std::pair<int, double>> issued = {}) {
+    render::PassTiming p;
+    p.name = std::move(name);
+    p.cpuMs = ms;
+    p.object = object;
+    p.issued = std::move(issued);
+    return p;
+  };
+  render::RenderTimings t;
+  t.passes = {pass("shadow:0", 9.0),
+              pass("lit", 5.5, -1, {{0, 1.0}, {1, 0.5}}),
+              pass("separable:geometry", 1.0, -1, {{3, 0.25}}),
+              pass("separable:blur-x", 2.0),
+              pass("separable:blur-y", 1.5),
+              pass("texture-space:irradiance", 7.0, 2),
+              pass("texture-space:copy", 0.5),
+              pass("tonemap", 3.0)};
+  const std::vector<double> weights = {3.0, 1.0, 0.0, 5.0};
+  const FramePassCosts c = framePassCosts(t, weights);
+  ASSERT_EQ(c.objectMs.size(), 4u);
+  EXPECT_DOUBLE_EQ(c.objectMs[0], 1.0 + 4.0 * 0.75);  // the lit pass's rest, 4 ms, by 3 : 1
+  EXPECT_DOUBLE_EQ(c.objectMs[1], 0.5 + 4.0 * 0.25);
+  EXPECT_DOUBLE_EQ(c.objectMs[2], 7.0);
+  EXPECT_DOUBLE_EQ(c.objectMs[3], 1.0);  // alone in its pass: all of it
+  ASSERT_EQ(c.methodMs.size(), 5u);
+  EXPECT_DOUBLE_EQ(c.methodMs[std::size_t(render::ShadingMethod::Lit)], 0.0);
+  EXPECT_DOUBLE_EQ(c.methodMs[std::size_t(render::ShadingMethod::Separable)], 3.5);
+  EXPECT_DOUBLE_EQ(c.methodMs[std::size_t(render::ShadingMethod::TextureSpace)], 0.5);
+  // The frame's passes (shadows, tone map) are no one's: the overhead.
+  double all = 0.0;
+  for (double ms : c.objectMs)
+    all += ms;
+  for (double ms : c.methodMs)
+    all += ms;
+  EXPECT_DOUBLE_EQ(all, 5.5 + 1.0 + 3.5 + 7.0 + 0.5);
+}
+
 TEST(OpticalWrap, IsTheDiffusionLengthOverTheCurvatureRadius) {
   // sigma_tr = sqrt(3 sigma_a (sigma_a + sigma_s (1 - g))) of the band that travels furthest
   // (Jensen et al. 2001), over R = sqrt(area / 4 pi).

@@ -104,13 +104,23 @@ TEST(LoopReport, InstrumentJsonHoldsTheRecordsFigures) {
 
 TEST(LoopReport, PassTimingsJsonListsThePassesInOrder) {
   render::RenderTimings timings;
-  timings.passes = {{"shadow:0", 0.5, -1.0}, {"lit", 2.25, 1.75}, {"tonemap", 0.125, 0.0625}};
+  const auto pass = [](std::string name, double cpu, double gpu, int object) {
+    render::PassTiming p;
+    p.name = std::move(name);
+    p.cpuMs = cpu;
+    p.gpuMs = gpu;
+    p.object = object;
+    return p;
+  };
+  timings.passes = {pass("shadow:0", 0.5, -1.0, -1), pass("lit", 2.25, 1.75, 0),
+                    pass("tonemap", 0.125, 0.0625, -1)};
   const auto j = nlohmann::json::parse(passTimingsJson(timings));
   ASSERT_EQ(j.size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) {
     EXPECT_EQ(j[i]["name"], timings.passes[i].name);
     EXPECT_DOUBLE_EQ(j[i]["cpu_ms"].get<double>(), timings.passes[i].cpuMs);
     EXPECT_DOUBLE_EQ(j[i]["gpu_ms"].get<double>(), timings.passes[i].gpuMs);
+    EXPECT_EQ(j[i]["object"].get<int>(), timings.passes[i].object);
   }
   EXPECT_EQ(nlohmann::json::parse(passTimingsJson({})).size(), 0u);
 }

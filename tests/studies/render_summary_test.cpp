@@ -26,7 +26,12 @@ TEST(RenderSummary, EachMethodReportsItsOwnSettings) {
   c.adaptive = false;
   c.parallaxDepthMm = 2.5f;
   render::RenderTimings t;
-  t.passes = {{"lit", 1.0, -1.0}, {"ray-march", 7.5, -1.0}};
+  for (const auto& [name, ms] : {std::pair<const char*, double>{"lit", 1.0}, {"ray-march", 7.5}}) {
+    render::PassTiming p;
+    p.name = name;
+    p.cpuMs = ms;
+    t.passes.push_back(p);
+  }
   t.totalCpuMs = 9.0;
   t.uploadCpuMs = 0.25;
   using render::ShadingMethod;

@@ -10,7 +10,7 @@ namespace tissue::quality {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kMaxCostUnits = 20000.0;  // the knapsack's columns at most (choosePlan)
+constexpr double kMaxCostUnits = 4000.0;  // the knapsack's columns at most (choosePlan)
 
 int wrapOption(const QualityTable& table, const ControllerSettings& s) {
   const int wrap = table.find(s.wrapMethod, s.wrapSetting);
@@ -179,12 +179,67 @@ ViewClass viewClassOf(const ObjectView& v, double screenPx, const ControllerSett
   return ViewClass::Rest;
 }
 
+namespace {
+
+// The methods of the table's options: a name per method, and each option's method index.
+struct MethodIndex {
+  std::vector<std::string> names;
+  std::vector<std::size_t> of;  // per option
+};
+MethodIndex methodIndexOf(const QualityTable& table) {
+  MethodIndex m;
+  for (const QualityOption& o : table.options) {
+    const auto it = std::find(m.names.begin(), m.names.end(), o.method);
+    m.of.push_back(std::size_t(it - m.names.begin()));
+    if (it == m.names.end()) m.names.push_back(o.method);
+  }
+  return m;
+}
+
+// The passes of no object that `option`'s methods run: each method's once (passMs per option).
+double passesOf(const MethodIndex& methods, std::span<const double> passMs, std::span<const int> option) {
+  if (passMs.empty()) return 0.0;
+  std::vector<bool> used(methods.names.size(), false);
+  double ms = 0.0;
+  for (int o : option) {
+    if (o < 0 || std::size_t(o) >= passMs.size() || used[methods.of[std::size_t(o)]]) continue;
+    used[methods.of[std::size_t(o)]] = true;
+    ms += std::max(0.0, passMs[std::size_t(o)]);
+  }
+  return ms;
+}
+
+// The options of `cand` in the method set `mask` that no other of them beats on both cost and
+// charged error (a dominated option is never in an optimal plan: the knapsack need not see it).
+std::vector<int> frontOf(const QualityTable& table, std::span<const CostModel> costs,
+                         const MethodIndex& methods, const std::vector<int>& cand, unsigned mask,
+                         const ObjectView& view, ViewClass cls, const ControllerSettings& s) {
+  std::vector<std::pair<double, int>> byCost;
+  for (int o : cand)
+    if (const std::size_t m = methods.of[std::size_t(o)]; m >= 32 || (mask & (1u << m)))
+      byCost.push_back({costOf(costs, o, view), o});
+  std::stable_sort(byCost.begin(), byCost.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<int> out;
+  double least = kInf;
+  for (const auto& [cost, o] : byCost) {
+    const double e = chargedSquaredError(table.options[std::size_t(o)], cls, s);
+    if (e < least - 1e-15) {
+      out.push_back(o);
+      least = e;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 Plan evaluatePlan(const QualityTable& table, std::span<const CostModel> costs, double overheadMs,
                   std::span<const ObjectView> objects, double screenPx, std::vector<int> option,
-                  double budgetMs, const ControllerSettings& s) {
+                  double budgetMs, const ControllerSettings& s, std::span<const double> passMs) {
   Plan p;
   p.option = std::move(option);
-  p.predictedMs = overheadMs;
+  p.predictedMs = overheadMs + passesOf(methodIndexOf(table), passMs, p.option);
   double we = 0.0, w = 0.0;
   for (std::size_t i = 0; i < objects.size() && i < p.option.size(); ++i) {
     const int o = p.option[i];
@@ -200,30 +255,90 @@ Plan evaluatePlan(const QualityTable& table, std::span<const CostModel> costs, d
 
 Plan choosePlan(const QualityTable& table, std::span<const CostModel> costs, double overheadMs,
                 std::span<const ObjectView> objects, double screenPx, double budgetMs,
-                const ControllerSettings& s) {
+                const ControllerSettings& s, std::span<const double> passMs) {
   const std::size_t n = objects.size();
   std::vector<std::vector<int>> cand(n);
   for (std::size_t i = 0; i < n; ++i)
     cand[i] = candidatesOf(table, objects[i], s);
+  const MethodIndex methods = methodIndexOf(table);
+  // Each method's passes of no object (the value its options carry).
+  std::vector<double> methodPass(methods.names.size(), 0.0);
+  if (passMs.size() == table.options.size())
+    for (std::size_t o = 0; o < passMs.size(); ++o)
+      methodPass[methods.of[o]] = std::max(methodPass[methods.of[o]], std::max(0.0, passMs[o]));
+  // The method sets a plan may use, each paying its methods' passes once: the methods without
+  // passes of their own always (allowing them costs nothing), with every subset of the others.
+  // More than 6 methods with passes (or more than 32 methods): all at once, all passes paid.
+  unsigned always = 0;
+  std::vector<std::size_t> paid;
+  for (std::size_t m = 0; m < methodPass.size() && m < 32; ++m) {
+    if (methodPass[m] > 0.0)
+      paid.push_back(m);
+    else
+      always |= 1u << m;
+  }
+  std::vector<unsigned> sets;
+  std::vector<double> setPassMs;
+  if (paid.size() > 6 || methods.names.size() > 32) {
+    sets.push_back(~0u);
+    setPassMs.push_back(0.0);
+    for (double ms : methodPass)
+      setPassMs.back() += ms;
+  } else {
+    for (unsigned sub = 0; sub < (1u << paid.size()); ++sub) {
+      unsigned mask = always;
+      double ms = 0.0;
+      for (std::size_t j = 0; j < paid.size(); ++j)
+        if (sub & (1u << j)) {
+          mask |= 1u << paid[j];
+          ms += methodPass[paid[j]];
+        }
+      if (mask == 0) continue;
+      sets.push_back(mask);
+      setPassMs.push_back(ms);
+    }
+  }
   std::vector<int> option;
   bool fits = false;
   if (!objectsWithoutCandidate(cand)) {
-    // The cheapest plan's cost first: where even it does not fit, the plan of least error within
-    // the headroom above it (the learned costs' own noise), not each object's cheapest option,
-    // which that noise picks among options of one cost (plain lit or its wrap term). One
-    // knapsack per frame either way.
-    double cheapest = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      double c = kInf;
-      for (int o : cand[i])
-        c = std::min(c, costOf(costs, o, objects[i]));
-      cheapest += c;
+    // Each set's candidates, pruned to the options no other beats on cost and error.
+    std::vector<std::vector<std::vector<int>>> front(sets.size(), std::vector<std::vector<int>>(n));
+    std::vector<bool> usable(sets.size(), true);
+    double cheapest = kInf;  // the cheapest plan's cost over the sets, their passes included
+    for (std::size_t k = 0; k < sets.size(); ++k) {
+      double c = setPassMs[k];
+      for (std::size_t i = 0; i < n && usable[k]; ++i) {
+        front[k][i] = frontOf(table, costs, methods, cand[i], sets[k], objects[i],
+                              viewClassOf(objects[i], screenPx, s), s);
+        if (front[k][i].empty())
+          usable[k] = false;
+        else
+          c += costOf(costs, front[k][i].front(), objects[i]);  // the cheapest comes first
+      }
+      if (usable[k]) cheapest = std::min(cheapest, c);
     }
+    // Where even the cheapest plan does not fit, the plan of least error within the headroom
+    // above it (the learned costs' own noise), not each object's cheapest option, which that
+    // noise picks among options of one cost (plain lit or its wrap term).
     const double free = budgetMs * (1.0 - s.headroom) - overheadMs;
     fits = cheapest <= free;
     const double grid = std::max({s.costGridMs, 1e-4, 2.0 * cheapest / kMaxCostUnits});
-    option = leastErrorWithin(table, costs, objects, cand, screenPx,
-                              fits ? free : cheapest * (1.0 + s.headroom) + 2.0 * double(n) * grid, s);
+    const double limit = fits ? free : cheapest * (1.0 + s.headroom) + 2.0 * double(n) * grid;
+    double bestError = kInf, bestMs = kInf;
+    for (std::size_t k = 0; k < sets.size(); ++k) {
+      if (!usable[k] || setPassMs[k] > limit) continue;
+      std::vector<int> o =
+          leastErrorWithin(table, costs, objects, front[k], screenPx, limit - setPassMs[k], s);
+      if (o.empty()) continue;
+      const Plan p = evaluatePlan(table, costs, overheadMs, objects, screenPx, o, budgetMs, s, passMs);
+      // Ties go to the cheaper plan, for a steady choice.
+      if (p.expectedError < bestError - 1e-12 ||
+          (p.expectedError <= bestError + 1e-12 && p.predictedMs < bestMs)) {
+        bestError = p.expectedError;
+        bestMs = p.predictedMs;
+        option = std::move(o);
+      }
+    }
     fits = fits && !option.empty();
   }
   if (option.empty()) {  // an object without candidates (or the grid's rounding): each one's cheapest
@@ -237,7 +352,7 @@ Plan choosePlan(const QualityTable& table, std::span<const CostModel> costs, dou
         }
     }
   }
-  Plan p = evaluatePlan(table, costs, overheadMs, objects, screenPx, std::move(option), budgetMs, s);
+  Plan p = evaluatePlan(table, costs, overheadMs, objects, screenPx, std::move(option), budgetMs, s, passMs);
   p.fits = fits;
   return p;
 }
@@ -256,6 +371,8 @@ QualityController::QualityController(QualityTable table, ControllerSettings sett
   m_methodRatio.assign(m_methods.size(), 1.0);
   m_methodRatioSamples.assign(m_methods.size(), 0);
   m_switchSamples.assign(m_table.options.size(), 0);
+  m_passMs.assign(m_methods.size(), 0.0);
+  m_passSamples.assign(m_methods.size(), 0);
 }
 
 std::vector<CostModel> QualityController::planningCosts() const {
@@ -273,6 +390,13 @@ std::vector<CostModel> QualityController::planningCosts() const {
   return out;
 }
 
+std::vector<double> QualityController::planningPassMs() const {
+  std::vector<double> out(m_table.options.size(), 0.0);
+  for (std::size_t o = 0; o < out.size(); ++o)
+    out[o] = m_passMs[m_optionMethod[o]];
+  return out;
+}
+
 double QualityController::planningBudgetMs(double budgetMs) const {
   return budgetMs / (1.0 + std::max(0.0, m_settings.tailZ) * frameSpread());
 }
@@ -284,7 +408,7 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
   // puts half its frames over it.
   const double tail = 1.0 + std::max(0.0, s.tailZ) * frameSpread();
   const std::vector<CostModel> costs = planningCosts();
-  const Plan best = choosePlan(m_table, costs, m_overheadMs, objects, screenPx, budgetMs / tail, s);
+  const std::vector<double> passMs = planningPassMs();
   // A new budget or a new set of objects: the held plan was made for something else.
   bool replace = m_plan.option.size() != objects.size() || budgetMs != m_budgetMs;
   m_budgetMs = budgetMs;
@@ -296,24 +420,35 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
       replace = std::find(cand.begin(), cand.end(), m_plan.option[i]) == cand.end();
     }
   }
-  Plan held;
+  Plan held, best;
   if (!replace) {
-    held = evaluatePlan(m_table, costs, m_overheadMs, objects, screenPx, m_plan.option, budgetMs / tail, s);
-    const bool over = held.predictedMs * tail > budgetMs * (1.0 + s.overBudgetTolerance) &&
-                      best.predictedMs < held.predictedMs;
-    bool gains = m_age >= s.holdFrames && best.expectedError < held.expectedError * (1.0 - s.gainMargin);
-    if (gains) {
-      // The switch frame itself must fit: the new plan plus the one-off costs of the options it
-      // gives objects anew (a held plan that fits is no reason to break the budget once).
-      double switchMs = 0.0;
-      for (std::size_t i = 0; i < objects.size(); ++i)
-        if (best.option[i] != m_plan.option[i]) switchMs += m_switchMs[std::size_t(best.option[i])];
-      if (best.predictedMs + switchMs > budgetMs) {
-        gains = false;
-        ++m_deferred;
+    held = evaluatePlan(m_table, costs, m_overheadMs, objects, screenPx, m_plan.option, budgetMs / tail, s,
+                        passMs);
+    // The plan is searched only where it may change: held too long to keep without asking, or
+    // over the budget.
+    const bool overHeld = held.predictedMs * tail > budgetMs * (1.0 + s.overBudgetTolerance);
+    if (m_age >= s.holdFrames || overHeld) {
+      best = choosePlan(m_table, costs, m_overheadMs, objects, screenPx, budgetMs / tail, s, passMs);
+      const bool over = overHeld && best.predictedMs < held.predictedMs;
+      bool gains = m_age >= s.holdFrames && best.expectedError < held.expectedError * (1.0 - s.gainMargin);
+      if (gains) {
+        // The switch frame itself must fit: the new plan plus the one-off costs of the options
+        // it gives objects anew (a held plan that fits is no reason to break the budget once).
+        double switchMs = 0.0;
+        for (std::size_t i = 0; i < objects.size(); ++i)
+          if (best.option[i] != m_plan.option[i]) switchMs += m_switchMs[std::size_t(best.option[i])];
+        if (best.predictedMs + switchMs > budgetMs) {
+          gains = false;
+          ++m_deferred;
+        }
       }
+      replace = over || gains;
+      // Asked and kept: the next question in holdFrames (a search per frame would cost a
+      // knapsack per set of methods every frame: tissue_quality_bench).
+      if (!replace) m_age = 0;
     }
-    replace = over || gains;
+  } else {
+    best = choosePlan(m_table, costs, m_overheadMs, objects, screenPx, budgetMs / tail, s, passMs);
   }
   ++m_age;
   ++m_updates;
@@ -349,11 +484,30 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
   return m_choices;
 }
 
-void QualityController::observe(std::span<const CostSample> samples, double frameMs) {
+void QualityController::observe(std::span<const CostSample> samples, std::span<const PassSample> passes,
+                                double frameMs) {
   if (m_updates <= 1) return;  // the first frame builds everything: no steady cost
   std::vector<int> switchedTo;
   for (const ObjectChoice& c : m_choices)
     if (c.switched) switchedTo.push_back(c.option);
+  // The methods' own passes: learned where none of the method's objects switched (a switch
+  // frame's one-off work, a first kernel table, is not the method's steady cost).
+  double passesMs = 0.0;
+  std::vector<int> objectsOfMethod(m_methods.size(), 0);
+  std::vector<bool> switchedMethod(m_methods.size(), false);
+  for (const ObjectChoice& c : m_choices) {
+    const std::size_t m = m_optionMethod[std::size_t(c.option)];
+    ++objectsOfMethod[m];
+    if (c.switched) switchedMethod[m] = true;
+  }
+  for (const PassSample& p : passes) {
+    const auto it = std::find(m_methods.begin(), m_methods.end(), p.method);
+    if (it == m_methods.end() || !std::isfinite(p.ms)) continue;
+    const auto m = std::size_t(it - m_methods.begin());
+    passesMs += std::max(0.0, p.ms);
+    if (objectsOfMethod[m] > 0 && !switchedMethod[m])
+      runningEma(m_passMs[m], m_passSamples[m], std::max(0.0, p.ms), m_settings.learningRate);
+  }
   double objectsMs = 0.0;
   for (const CostSample& c : samples) {
     if (c.object >= m_choices.size() || m_choices[c.object].switched) continue;
@@ -366,12 +520,13 @@ void QualityController::observe(std::span<const CostSample> samples, double fram
       for (std::size_t sib = 0; sib < m_costs.size(); ++sib)
         if (m_table.options[sib].costClass == cls) m_costs[sib] = m_costs[std::size_t(o)];
     objectsMs += c.ms;
-    // Measured over prior (planningCosts), per method and over all.
+    // Measured over prior (planningCosts), per method and over all. The prior is an atlas
+    // frame's, one object with its method's passes: the measured side adds them.
     const QualityOption& opt = m_table.options[std::size_t(o)];
     const double prior = opt.fixedMs + opt.msPerPx * std::max(0.0, px);
+    const std::size_t m = m_optionMethod[std::size_t(o)];
     if (prior > 1e-9 && std::isfinite(c.ms)) {
-      const double ratio = std::clamp(c.ms / prior, 0.05, 20.0);
-      const std::size_t m = m_optionMethod[std::size_t(o)];
+      const double ratio = std::clamp((c.ms + m_passMs[m]) / prior, 0.05, 20.0);
       runningEma(m_methodRatio[m], m_methodRatioSamples[m], ratio, m_settings.learningRate);
       runningEma(m_allRatio, m_allRatioSamples, ratio, m_settings.learningRate);
     }
@@ -395,7 +550,7 @@ void QualityController::observe(std::span<const CostSample> samples, double fram
   }
   if (std::isfinite(frameMs)) {
     const double a = std::clamp(m_settings.learningRate, 0.0, 1.0);
-    m_overheadMs = (1 - a) * m_overheadMs + a * std::max(0.0, frameMs - objectsMs);
+    m_overheadMs = (1 - a) * m_overheadMs + a * std::max(0.0, frameMs - objectsMs - passesMs);
   }
 }
 

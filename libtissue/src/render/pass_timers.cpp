@@ -9,10 +9,11 @@ void PassTimers::beginFrame(const gl::GlApi& gl, bool gpu, bool finish) {
   m_passes.clear();
 }
 
-void PassTimers::begin(const std::string& name) {
+void PassTimers::begin(const std::string& name, int object) {
   if (m_finish) m_gl->Finish();  // earlier passes complete before this one's clock starts
   Running pass;
   pass.timing.name = name;
+  pass.timing.object = object;
   if (m_gpu) {
     const std::size_t index = m_passes.size();
     if (m_queries.size() <= index) m_queries.push_back(gl::Query::create(*m_gl));
@@ -27,6 +28,14 @@ void PassTimers::end() {
   if (pass.query >= 0) m_gl->EndQuery(GL_TIME_ELAPSED);
   if (m_finish) m_gl->Finish();  // llvmpipe rasterises lazily: wait for this pass's fragments
   pass.timing.cpuMs = pass.started.elapsedMs();
+}
+
+void PassTimers::issued(int object) {
+  if (m_passes.empty()) return;
+  Running& pass = m_passes.back();
+  const double now = pass.started.elapsedMs();
+  pass.timing.issued.push_back({object, now - pass.markedMs});
+  pass.markedMs = now;
 }
 
 std::vector<PassTiming> PassTimers::finishFrame() {

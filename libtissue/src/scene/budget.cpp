@@ -99,10 +99,36 @@ Result<render::MethodSettings> methodOfOption(const quality::QualityOption& opti
   return settings;
 }
 
-std::vector<double> methodPassMs(const render::RenderTimings& timings) {
-  std::vector<double> ms(5, 0.0);
-  const auto starts = [](const std::string& n, std::string_view p) { return n.rfind(p, 0) == 0; };
+FramePassCosts framePassCosts(const render::RenderTimings& timings, std::span<const double> weights) {
+  FramePassCosts out;
+  const std::size_t n = weights.size();
+  out.objectMs.assign(n, 0.0);
+  out.methodMs.assign(5, 0.0);
+  const auto starts = [](const std::string& name, std::string_view p) { return name.rfind(p, 0) == 0; };
   for (const render::PassTiming& p : timings.passes) {
+    if (p.object >= 0) {
+      if (std::size_t(p.object) < n) out.objectMs[std::size_t(p.object)] += p.cpuMs;
+      continue;
+    }
+    if (!p.issued.empty()) {
+      // Each object its issue time; the rest of the pass by weight (llvmpipe: the fragments).
+      double rest = p.cpuMs, total = 0.0;
+      for (const auto& [object, ms] : p.issued) {
+        rest -= ms;
+        if (object >= 0 && std::size_t(object) < n) {
+          out.objectMs[std::size_t(object)] += ms;
+          total += std::max(0.0, weights[std::size_t(object)]);
+        }
+      }
+      rest = std::max(0.0, rest);
+      for (const auto& [object, ms] : p.issued) {
+        if (object < 0 || std::size_t(object) >= n) continue;
+        const double share =
+            total > 0.0 ? std::max(0.0, weights[std::size_t(object)]) / total : 1.0 / double(p.issued.size());
+        out.objectMs[std::size_t(object)] += rest * share;
+      }
+      continue;
+    }
     int m = -1;
     if (p.name == "lit")
       m = 0;
@@ -114,9 +140,9 @@ std::vector<double> methodPassMs(const render::RenderTimings& timings) {
       m = 3;
     else if (starts(p.name, "parallax"))
       m = 4;
-    if (m >= 0) ms[std::size_t(m)] += p.cpuMs;
+    if (m >= 0) out.methodMs[std::size_t(m)] += p.cpuMs;
   }
-  return ms;
+  return out;
 }
 
 }  // namespace tissue::scene

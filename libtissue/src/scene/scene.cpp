@@ -81,6 +81,7 @@ struct Scene::Impl {
     int budgetOption = -1;                         ///< the quality table option it has; -1: its own method
     std::map<int, render::MethodSettings> optionSettings;  ///< built once per option
     std::vector<int> offered;                              ///< table options its material offers
+    std::size_t objectIndex = 0;  ///< its index in render::Scene::objects (buildObjects)
   };
   std::vector<Organ> organs;
 
@@ -143,35 +144,32 @@ struct Scene::Impl {
     }
     return {};
   }
-  /// The last frame's pass times as each organ's cost: a method's passes shared among its organs
-  /// by their predicted costs, or by their footprints where one of them was predicted free (a
-  /// share of 0 would be learned as 0 ms and never corrected).
+  /// The last frame's measured costs: each organ's own passes and draws (framePassCosts) and each
+  /// method's passes of no object; the instruments' and the frame's passes are overhead.
   void learnBudget(double frameMs) {
     if (budgetMs <= 0.0 || !controller || !renderer || budgetChoices.size() != organs.size()) return;
-    const render::RenderTimings& t = renderer->lastTimings();
-    const std::vector<double> perMethod = methodPassMs(t);
-    const auto methodOf = [&](std::size_t i) { return std::size_t(render::shadingMethod(organs[i].method)); };
-    std::vector<double> predicted(perMethod.size(), 0.0), footprint(perMethod.size(), 0.0);
-    std::vector<bool> anyFree(perMethod.size(), false);
-    std::vector<int> count(perMethod.size(), 0);
+    // The rest of a pass of several organs goes by covered pixels times the option's per-pixel
+    // cost (the table's, relative between settings drawn in one pass).
+    std::vector<double> weights(scene.objects.size(), 0.0);
+    const quality::QualityTable& table = controller->table();
     for (std::size_t i = 0; i < organs.size(); ++i) {
-      const double p = controller->choices()[i].predictedMs;
-      predicted[methodOf(i)] += p;
-      footprint[methodOf(i)] += std::max(0.0, budgetChoices[i].footprintPx);
-      if (!(p > 0.0)) anyFree[methodOf(i)] = true;
-      ++count[methodOf(i)];
+      const int o = controller->choices()[i].option;
+      const double perPx = o >= 0 ? table.options[std::size_t(o)].msPerPx : 0.0;
+      weights[organs[i].objectIndex] = std::max(0.0, budgetChoices[i].footprintPx) * std::max(perPx, 1e-9);
     }
+    const FramePassCosts costs = framePassCosts(renderer->lastTimings(), weights);
     std::vector<quality::CostSample> samples;
+    std::vector<bool> used(costs.methodMs.size(), false);
     for (std::size_t i = 0; i < organs.size(); ++i) {
-      const std::size_t m = methodOf(i);
-      double share = 1.0 / double(count[m]);
-      if (!anyFree[m])
-        share = controller->choices()[i].predictedMs / predicted[m];
-      else if (footprint[m] > 0.0)
-        share = std::max(0.0, budgetChoices[i].footprintPx) / footprint[m];
-      samples.push_back({i, perMethod[m] * share});
+      samples.push_back({i, costs.objectMs[organs[i].objectIndex]});
+      used[std::size_t(render::shadingMethod(organs[i].method))] = true;
     }
-    controller->observe(samples, frameMs);
+    std::vector<quality::PassSample> passes;
+    for (std::size_t m = 0; m < used.size(); ++m)
+      if (used[m])
+        passes.push_back(
+            {std::string(render::shadingMethodName(render::ShadingMethod(m))), costs.methodMs[m]});
+    controller->observe(samples, passes, frameMs);
   }
 
   mesh::SurfaceWork meshWork(const Organ& o, render::ShadingMethod method) const {
@@ -247,7 +245,7 @@ struct Scene::Impl {
   }
   void buildObjects() {
     scene.objects.clear();
-    for (const Organ& o : organs) {
+    for (Organ& o : organs) {
       render::SceneObject object = organObject(o.loop ? o.loop->meshHandle() : o.mesh, o.textures, o.method,
                                                surfaceMaterialOf(o.assets, settings.ambient));
       if (!o.hasNormalMap) object.normalMap = {};  // SceneSettings::normalMaps off
@@ -256,6 +254,7 @@ struct Scene::Impl {
       // The ray march's texture units per mm are world values (render::SceneObject::model).
       if (auto* march = std::get_if<render::RayMarchSettings>(&object.method))
         march->uvPerMm /= uniformScaleOf(o.model);
+      o.objectIndex = scene.objects.size();
       scene.objects.push_back(std::move(object));
       if (o.loop && instrumentVisible)
         if (auto tool = o.loop->instrumentObject()) {

@@ -51,7 +51,7 @@ nlohmann::json instrument(const scene::LoopRecord& r) {
 nlohmann::json passTimings(const render::RenderTimings& timings) {
   nlohmann::json list = nlohmann::json::array();
   for (const auto& p : timings.passes)
-    list.push_back({{"name", p.name}, {"cpu_ms", p.cpuMs}, {"gpu_ms", p.gpuMs}});
+    list.push_back({{"name", p.name}, {"cpu_ms", p.cpuMs}, {"gpu_ms", p.gpuMs}, {"object", p.object}});
   return list;
 }
 

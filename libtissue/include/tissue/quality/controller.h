@@ -54,8 +54,10 @@ struct ControllerSettings {
   /// difference above it (QualityOption::squaredStderr): the table's truth is noisy, and an
   /// option whose lead it did not resolve should not win on that noise (0: the table's means).
   double errorConfidence = 1.0;
-  double costGridMs = 0.02;          ///< ms, the knapsack's cost resolution (costs round up)
-  int holdFrames = 30;               ///< a new plan at most every N frames (hysteresis)
+  /// ms, the knapsack's cost resolution (costs round up); coarser where the budget would need more
+  /// than 4000 grid steps (bounded time per search)
+  double costGridMs = 0.02;
+  int holdFrames = 30;  ///< the plan is searched again every N frames (hysteresis; at once when over budget)
   double gainMargin = 0.1;           ///< a new plan only if its expected error is this much lower
   double overBudgetTolerance = 0.1;  ///< the held plan is dropped at once above budget x (1 + this)
   double learningRate = 0.1;         ///< EMA weight of one measured sample (0..1]
@@ -94,7 +96,7 @@ ViewClass viewClassOf(const ObjectView& view, double screenPx, const ControllerS
 /// A plan: one option per object.
 struct Plan {
   std::vector<int> option;   ///< per object, table index
-  double predictedMs = 0.0;  ///< ms, frame overhead + the objects' predicted costs
+  double predictedMs = 0.0;  ///< ms, frame overhead + the methods' passes + the objects' predicted costs
   /// sqrt(sum w_i c_i / sum w_i), w = importance x footprint, c the charged squared error
   /// e^2 + errorConfidence x squaredStderr of the option on the object's view
   double expectedError = 0.0;
@@ -106,14 +108,20 @@ struct Plan {
 /// footprint threshold take the wrap option. When nothing fits (fits = false): the plan of least
 /// error among those within `headroom` of the cheapest plan's cost (costs that close are one
 /// cost measured with noise: plain lit and its wrap term).
+///
+/// `passMs` (empty: none), per table option: the cost of the passes its method runs once a frame
+/// whatever the number of its objects (separable's screen-space blurs, texture space's copy);
+/// options of one method carry one value. A plan pays it once per method it uses: the plan is
+/// the best of one knapsack per set of methods, each with those passes taken off the budget.
 Plan choosePlan(const QualityTable& table, std::span<const CostModel> costs, double overheadMs,
                 std::span<const ObjectView> objects, double screenPx, double budgetMs,
-                const ControllerSettings& settings = {});
+                const ControllerSettings& settings = {}, std::span<const double> passMs = {});
 
 /// `plan`'s predicted cost and expected error, recomputed for `objects` (for a held plan).
 Plan evaluatePlan(const QualityTable& table, std::span<const CostModel> costs, double overheadMs,
                   std::span<const ObjectView> objects, double screenPx, std::vector<int> option,
-                  double budgetMs, const ControllerSettings& settings = {});
+                  double budgetMs, const ControllerSettings& settings = {},
+                  std::span<const double> passMs = {});
 
 /// What the controller chose for one object.
 struct ObjectChoice {
@@ -133,7 +141,13 @@ struct ObjectChoice {
 /// One object's measured cost this frame.
 struct CostSample {
   std::size_t object = 0;  ///< index in the last update's objects
-  double ms = 0.0;         ///< ms spent on it (its share of its method's passes)
+  double ms = 0.0;         ///< ms spent on it: its own passes (render::PassTiming::object)
+};
+
+/// A method's measured passes of no object this frame (its screen-space passes), ms.
+struct PassSample {
+  std::string method;  ///< "separable", ...
+  double ms = 0.0;
 };
 
 /// The stateful controller: the learned costs, the held plan and its age.
@@ -152,7 +166,12 @@ class QualityController {
   /// which a later switch must fit in the budget beside the new plan. Without this, a switch's
   /// spike read as steady cost sends the plan back at once and the controller oscillates. The
   /// first frame (everything new) teaches nothing.
-  void observe(std::span<const CostSample> samples, double frameMs);
+  ///
+  /// `passes`: the methods' own passes (PassSample), learned per method and charged once per
+  /// method a plan uses (choosePlan); a method with an object switched this frame is not learned.
+  void observe(std::span<const CostSample> samples, std::span<const PassSample> passes, double frameMs);
+  /// The same without pass samples: every measured ms is some object's.
+  void observe(std::span<const CostSample> samples, double frameMs) { observe(samples, {}, frameMs); }
 
   const std::vector<ObjectChoice>& choices() const { return m_choices; }
   const Plan& plan() const { return m_plan; }
@@ -165,6 +184,9 @@ class QualityController {
   /// and scene; a setting's cost is mostly its method's passes, so one measured setting
   /// calibrates its siblings before each of them is tried at the price of a frame over budget.
   std::vector<CostModel> planningCosts() const;
+  /// Per table option, ms: its method's learned passes of no object (choosePlan's passMs; 0
+  /// until measured).
+  std::vector<double> planningPassMs() const;
   double overheadMs() const { return m_overheadMs; }
   /// The learned relative spread of frame times (an RMS about their running mean under one
   /// plan, over that mean; unitless). About the mean, not the prediction: while the costs
@@ -205,6 +227,8 @@ class QualityController {
   double m_allRatio = 1.0;
   int m_allRatioSamples = 0;
   std::vector<int> m_switchSamples;
+  std::vector<double> m_passMs;  ///< per method (index in m_methods), ms: its passes of no object
+  std::vector<int> m_passSamples;
 };
 
 }  // namespace tissue::quality

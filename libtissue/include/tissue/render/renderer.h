@@ -19,6 +19,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tissue/core/image.h"
@@ -97,6 +98,17 @@ struct PassTiming {
   std::string name;     ///< e.g. "shadow:0", "lit", "separable:blur-x", "tonemap"
   double cpuMs = 0.0;   ///< ms, CPU time issuing the pass
   double gpuMs = -1.0;  ///< ms, GPU time of the pass
+  /// The scene object (index in Scene::objects) whose work the whole pass is (texture space's and
+  /// parallax's per-object maps); -1: a pass of the frame (shadows, clear, tone map), of a method
+  /// as a whole (separable's screen-space blurs, texture space's copy: paid once whatever the
+  /// number of its objects), or one that draws several objects (`issued`).
+  int object = -1;
+  /// A pass that draws several objects (lit, separable's geometry, the ray march): each object's
+  /// CPU ms issuing its draw, in draw order (without a finish between them, which on llvmpipe
+  /// costs ~2 ms a pass). On llvmpipe the vertex work runs at issue, so this is an object's fixed
+  /// cost; the rest of the pass (rasterisation, the pass's finish) is left for the caller to
+  /// share (scene::framePassCosts, issue 16).
+  std::vector<std::pair<int, double>> issued;
 };
 
 /// The cost of the last frame, pass by pass, in execution order.

@@ -39,10 +39,18 @@ Result<MethodChoices> choicesOfSetting(const quality::QualityOption& option, con
 Result<render::MethodSettings> methodOfOption(const quality::QualityOption& option, const OrganAssets& organ,
                                               const OrganTextures& textures, const MethodChoices& base);
 
-/// ms of the last frame per method (ShadingMethod order): the sums of the passes each method ran
-/// ("lit", "separable:*", "texture-space*", "ray-march*", "parallax:*"); the rest of the frame is
-/// overhead.
-std::vector<double> methodPassMs(const render::RenderTimings& timings);
+/// The last frame's measured costs, ms, as the quality controller learns them: each scene
+/// object's own passes (render::PassTiming::object), its draws' issue times in passes that draw
+/// several objects (PassTiming::issued) with the rest of such a pass (its rasterisation and
+/// finish) shared among its objects by `weights` (per object; the covered pixels times the
+/// option's per-pixel cost; equal shares where all are 0), and each method's passes of no object
+/// (its screen-space passes) by method (ShadingMethod order: "lit", "separable:*",
+/// "texture-space*", "ray-march*", "parallax:*"). The rest of the frame is overhead.
+struct FramePassCosts {
+  std::vector<double> objectMs;  ///< per render::Scene::objects index
+  std::vector<double> methodMs;  ///< per ShadingMethod: its passes of no object
+};
+FramePassCosts framePassCosts(const render::RenderTimings& timings, std::span<const double> weights);
 
 /// What the controller chose for one organ.
 struct BudgetChoice {

@@ -38,6 +38,8 @@ struct ObjectDraw {
   std::array<GLuint, kMaxMethodTextures> methodTextures{};
   ModelTransform transform{};    ///< SceneObject::model with its normal matrix and scale
   glm::vec3 lo{0.0f}, hi{0.0f};  ///< world bounds, mm (the mesh's bounds through the model)
+  /// The object's index in Scene::objects, as its passes are tagged (PassTiming::object).
+  int index() const { return static_cast<int>(objectId) - 1; }
 };
 
 /// The frame as the methods see it.

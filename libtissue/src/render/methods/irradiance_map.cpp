@@ -1,9 +1,14 @@
 // The reusable irradiance-map pass (texture-space diffusion; Jimenez et al. §3-5).
 #include "irradiance_map.h"
 
+#include <cstring>
 #include <string>
 #include <tuple>
 
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "../camera_math.h"
 #include "tissue/render/shading.h"
 
 #include "tissue/gl/program.h"
@@ -180,6 +185,20 @@ Result<void> IrradianceMap::render(GLuint vertexArray, GLsizei indexCount, const
   }
   g.ActiveTexture(GL_TEXTURE0);
   return draw(vertexArray, indexCount, settings.clip);
+}
+
+IrradianceFrame cameraIrradianceFrame(const Camera& c, int width, int height) {
+  const auto toMat = [](const glm::mat4& m) {
+    Mat4 out;
+    std::memcpy(out.data(), glm::value_ptr(m), sizeof(float) * 16);
+    return out;
+  };
+  IrradianceFrame f;
+  f.view = toMat(glm::lookAt(toGlm(c.eye), toGlm(c.target), toGlm(c.up)));
+  f.projection = toMat(
+      glm::perspective(glm::radians(c.verticalFovDeg), float(width) / float(height), c.nearMm, c.farMm));
+  f.eye = c.eye;
+  return f;
 }
 
 }  // namespace tissue::render

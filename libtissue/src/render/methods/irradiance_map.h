@@ -48,6 +48,10 @@ struct IrradianceFrame {
   bool twoSided = false;
 };
 
+/// The frame's camera as an irradiance frame (view, projection, eye; the rest default), for
+/// texture space and parallax alike.
+IrradianceFrame cameraIrradianceFrame(const Camera& camera, int width, int height);
+
 /// The pipeline's light for the irradiance pass: every light of the frame through
 /// common/lights.glsl with its shadow map, transmission, and the object's textures, so that the
 /// map holds what the separable geometry pass writes to its diffuse target (for p = 1).

@@ -24,6 +24,7 @@ Result<void> LitMethod::draw(const FrameContext& frame, std::span<const ObjectDr
         const auto* lit = std::get_if<LitSettings>(&d.object->method);
         frame.gl.Uniform1f(frame.gl.GetUniformLocation(program, "u_wrap"), lit ? lit->wrap : 0.0f);
         drawSurface(frame, program, d);
+        frame.passes.issued(d.index());  // PassTiming::issued
       }
     }
     return gl::checkGlError(frame.gl, "renderer: lit pass");

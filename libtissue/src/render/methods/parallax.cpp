@@ -19,12 +19,6 @@ namespace {
 constexpr int kDiscSamples = 16;     // per blur pass (shaders/parallax/blur.frag: at most 32)
 constexpr float kFarLightMm = 1e6f;  // a directional light becomes a point this far away
 
-Mat4 toMat4(const glm::mat4& m) {
-  Mat4 out;
-  std::memcpy(out.data(), glm::value_ptr(m), sizeof(float) * 16);
-  return out;
-}
-
 Result<void> checkSettings(const ParallaxSettings& s, float objectId) {
   const std::string where = "renderer: parallax object " + std::to_string(static_cast<int>(objectId) - 1);
   if (s.layers.empty() || s.layers.size() > static_cast<std::size_t>(kMaxParallaxLayers)) {
@@ -126,111 +120,116 @@ Result<int> ParallaxMethod::lightmap(const FrameContext& frame, const ObjectDraw
   const int reduced = s.lightmap.size / s.lightmap.reduction;
   // parallax:lightmap — per light: irradiance in UV space (culled, clipped), then box-filtered
   // into maps[0]; the first light overwrites (rgb and a), later ones add rgb.
-  auto drawn = frame.passes.run("parallax:lightmap", [&]() -> Result<void> {
-    const Camera& c = frame.scene.camera;
-    IrradianceFrame f;
-    f.view = toMat4(glm::lookAt(toGlm(c.eye), toGlm(c.target), toGlm(c.up)));
-    f.projection = toMat4(glm::perspective(glm::radians(c.verticalFovDeg),
-                                           float(frame.width) / float(frame.height), c.nearMm, c.farMm));
-    f.eye = c.eye;
-    f.boundsLo = fromGlm(object.lo), f.boundsHi = fromGlm(object.hi);
-    f.model = toArray(object.transform.model);
-    f.normalMatrix = toArray(object.transform.normalMatrix);
-    const IrradianceMapSettings settings{s.lightmap.cull, s.lightmap.clip, false, 1.0f, 0.0f};
-    const glm::vec3 centre = 0.5f * (toGlm(f.boundsLo) + toGlm(f.boundsHi));
-    for (int i = 0; i < std::max(frame.lights.count, 1); ++i) {
-      if (frame.lights.count > 0) {
-        const glm::vec4 v = frame.lights.vector[static_cast<std::size_t>(i)];
-        const glm::vec3 position = v.w > 0.5f ? glm::vec3(v) : centre + glm::vec3(v) * kFarLightMm;
-        f.lightPosition = fromGlm(position);
-        f.lightRadiance = fromGlm(frame.lights.radiance[static_cast<std::size_t>(i)]);
-      } else {
-        f.lightRadiance = {};
-      }
-      f.ambient = i == 0 ? object.object->material.ambient : Float3{};
-      if (auto r = l.irradiance.render(object.mesh->vertexArray(), object.mesh->indexCount(), f, settings);
-          !r)
-        return r;
-      fullScreenState(g, l.framebuffers[0].id(), reduced);
-      if (i == 0) {
+  auto drawn = frame.passes.run(
+      "parallax:lightmap",
+      [&]() -> Result<void> {
+        IrradianceFrame f = cameraIrradianceFrame(frame.scene.camera, frame.width, frame.height);
+        f.boundsLo = fromGlm(object.lo), f.boundsHi = fromGlm(object.hi);
+        f.model = toArray(object.transform.model);
+        f.normalMatrix = toArray(object.transform.normalMatrix);
+        const IrradianceMapSettings settings{s.lightmap.cull, s.lightmap.clip, false, 1.0f, 0.0f};
+        const glm::vec3 centre = 0.5f * (toGlm(f.boundsLo) + toGlm(f.boundsHi));
+        for (int i = 0; i < std::max(frame.lights.count, 1); ++i) {
+          if (frame.lights.count > 0) {
+            const glm::vec4 v = frame.lights.vector[static_cast<std::size_t>(i)];
+            const glm::vec3 position = v.w > 0.5f ? glm::vec3(v) : centre + glm::vec3(v) * kFarLightMm;
+            f.lightPosition = fromGlm(position);
+            f.lightRadiance = fromGlm(frame.lights.radiance[static_cast<std::size_t>(i)]);
+          } else {
+            f.lightRadiance = {};
+          }
+          f.ambient = i == 0 ? object.object->material.ambient : Float3{};
+          if (auto r =
+                  l.irradiance.render(object.mesh->vertexArray(), object.mesh->indexCount(), f, settings);
+              !r)
+            return r;
+          fullScreenState(g, l.framebuffers[0].id(), reduced);
+          if (i == 0) {
+            g.Disable(GL_BLEND);
+            g.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+          } else {
+            g.Enable(GL_BLEND);
+            g.BlendFunc(GL_ONE, GL_ONE);
+            g.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);  // the visible fraction is the same
+          }
+          g.UseProgram(m_gather.id());
+          g.Uniform1i(g.GetUniformLocation(m_gather.id(), "u_reduction"), s.lightmap.reduction);
+          g.ActiveTexture(GL_TEXTURE0 + kUnitMethod0);
+          g.BindTexture(GL_TEXTURE_2D, l.irradiance.irradiance());
+          drawFullScreen(frame);
+        }
         g.Disable(GL_BLEND);
         g.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-      } else {
-        g.Enable(GL_BLEND);
-        g.BlendFunc(GL_ONE, GL_ONE);
-        g.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);  // the visible fraction is the same
-      }
-      g.UseProgram(m_gather.id());
-      g.Uniform1i(g.GetUniformLocation(m_gather.id(), "u_reduction"), s.lightmap.reduction);
-      g.ActiveTexture(GL_TEXTURE0 + kUnitMethod0);
-      g.BindTexture(GL_TEXTURE_2D, l.irradiance.irradiance());
-      drawFullScreen(frame);
-    }
-    g.Disable(GL_BLEND);
-    g.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    return gl::checkGlError(g, "renderer: parallax lightmap pass");
-  });
+        return gl::checkGlError(g, "renderer: parallax lightmap pass");
+      },
+      object.index());
   if (!drawn) return drawn.error();
   // parallax:lightmap-blur — Poisson-disc passes, ping-pong (§3.2).
   const float radiusMm = poissonPassRadiusMm(s.lightmap.blurRadiusMm, s.lightmap.blurPasses);
   if (s.lightmap.blurPasses == 0 || radiusMm <= 0.0f) return 0;
   int current = 0;
-  auto blurred = frame.passes.run("parallax:lightmap-blur", [&]() -> Result<void> {
-    const GLuint p = m_blur.id();
-    g.UseProgram(p);
-    g.Uniform1f(g.GetUniformLocation(p, "u_radiusMm"), radiusMm);
-    g.Uniform1f(g.GetUniformLocation(p, "u_size"), float(reduced));
-    g.ActiveTexture(GL_TEXTURE0 + kUnitMethod0 + 1);
-    g.BindTexture(GL_TEXTURE_2D, l.irradiance.stretch());
-    for (int pass = 0; pass < s.lightmap.blurPasses; ++pass) {
-      fullScreenState(g, l.framebuffers[1 - current].id(), reduced);
-      g.Disable(GL_BLEND);
-      g.ActiveTexture(GL_TEXTURE0 + kUnitMethod0);
-      g.BindTexture(GL_TEXTURE_2D, l.maps[current].id());
-      drawFullScreen(frame);
-      current = 1 - current;
-    }
-    return gl::checkGlError(g, "renderer: parallax lightmap blur");
-  });
+  auto blurred = frame.passes.run(
+      "parallax:lightmap-blur",
+      [&]() -> Result<void> {
+        const GLuint p = m_blur.id();
+        g.UseProgram(p);
+        g.Uniform1f(g.GetUniformLocation(p, "u_radiusMm"), radiusMm);
+        g.Uniform1f(g.GetUniformLocation(p, "u_size"), float(reduced));
+        g.ActiveTexture(GL_TEXTURE0 + kUnitMethod0 + 1);
+        g.BindTexture(GL_TEXTURE_2D, l.irradiance.stretch());
+        for (int pass = 0; pass < s.lightmap.blurPasses; ++pass) {
+          fullScreenState(g, l.framebuffers[1 - current].id(), reduced);
+          g.Disable(GL_BLEND);
+          g.ActiveTexture(GL_TEXTURE0 + kUnitMethod0);
+          g.BindTexture(GL_TEXTURE_2D, l.maps[current].id());
+          drawFullScreen(frame);
+          current = 1 - current;
+        }
+        return gl::checkGlError(g, "renderer: parallax lightmap blur");
+      },
+      object.index());
   if (!blurred) return blurred.error();
   return current;
 }
 
 Result<void> ParallaxMethod::geometry(const FrameContext& frame, const ObjectDraw& object,
                                       GLuint lightmapTexture) const {
-  return frame.passes.run("parallax:geometry", [&]() -> Result<void> {
-    const gl::GlApi& g = frame.gl;
-    const auto& s = std::get<ParallaxSettings>(object.object->method);
-    beginGeometryPass(frame);
-    const GLuint p = m_geometry.pick(object);
-    setFrameUniforms(frame, p);
-    auto at = [&](const char* name) { return g.GetUniformLocation(p, name); };
-    const int layers = static_cast<int>(s.layers.size());
-    float depths[kMaxParallaxLayers] = {}, opacities[kMaxParallaxLayers] = {};
-    for (int i = 0; i < layers; ++i) {
-      depths[i] = s.layers[static_cast<std::size_t>(i)].depthMm;
-      opacities[i] = s.layers[static_cast<std::size_t>(i)].opacity;
-    }
-    g.Uniform1i(at("u_layerCount"), layers);
-    g.Uniform1fv(at("u_layerDepthMm"), kMaxParallaxLayers, depths);
-    g.Uniform1fv(at("u_layerOpacity"), kMaxParallaxLayers, opacities);
-    g.Uniform1f(at("u_refractiveIndex"), s.refractiveIndex);
-    g.Uniform1f(at("u_innerBlurPerMm"), s.innerBlurPerMm);
-    g.Uniform1f(at("u_maxTransmissionMm"), s.maxTransmissionMm);
-    g.Uniform1i(at("u_hasOpacityMap"), object.methodTextures[0] ? 1 : 0);
-    g.Uniform1f(at("u_opacity"), s.opacity);
-    g.ActiveTexture(GL_TEXTURE0 + kUnitMethod0);
-    g.BindTexture(GL_TEXTURE_2D, lightmapTexture);
-    g.ActiveTexture(GL_TEXTURE0 + kUnitMethod0 + 1);
-    g.BindTexture(GL_TEXTURE_2D, object.methodTextures[0] ? object.methodTextures[0] : object.baseColor);
-    for (int i = 0; i < kMaxParallaxLayers; ++i) {  // a layer without a texture: the object's base
-      const GLuint t = object.methodTextures[static_cast<std::size_t>(i) + 1];
-      g.ActiveTexture(GLenum(GL_TEXTURE0 + kUnitMethod0 + 2 + i));
-      g.BindTexture(GL_TEXTURE_2D, t ? t : object.baseColor);
-    }
-    drawSurface(frame, p, object);
-    return gl::checkGlError(g, "renderer: parallax geometry pass");
-  });
+  return frame.passes.run(
+      "parallax:geometry",
+      [&]() -> Result<void> {
+        const gl::GlApi& g = frame.gl;
+        const auto& s = std::get<ParallaxSettings>(object.object->method);
+        beginGeometryPass(frame);
+        const GLuint p = m_geometry.pick(object);
+        setFrameUniforms(frame, p);
+        auto at = [&](const char* name) { return g.GetUniformLocation(p, name); };
+        const int layers = static_cast<int>(s.layers.size());
+        float depths[kMaxParallaxLayers] = {}, opacities[kMaxParallaxLayers] = {};
+        for (int i = 0; i < layers; ++i) {
+          depths[i] = s.layers[static_cast<std::size_t>(i)].depthMm;
+          opacities[i] = s.layers[static_cast<std::size_t>(i)].opacity;
+        }
+        g.Uniform1i(at("u_layerCount"), layers);
+        g.Uniform1fv(at("u_layerDepthMm"), kMaxParallaxLayers, depths);
+        g.Uniform1fv(at("u_layerOpacity"), kMaxParallaxLayers, opacities);
+        g.Uniform1f(at("u_refractiveIndex"), s.refractiveIndex);
+        g.Uniform1f(at("u_innerBlurPerMm"), s.innerBlurPerMm);
+        g.Uniform1f(at("u_maxTransmissionMm"), s.maxTransmissionMm);
+        g.Uniform1i(at("u_hasOpacityMap"), object.methodTextures[0] ? 1 : 0);
+        g.Uniform1f(at("u_opacity"), s.opacity);
+        g.ActiveTexture(GL_TEXTURE0 + kUnitMethod0);
+        g.BindTexture(GL_TEXTURE_2D, lightmapTexture);
+        g.ActiveTexture(GL_TEXTURE0 + kUnitMethod0 + 1);
+        g.BindTexture(GL_TEXTURE_2D, object.methodTextures[0] ? object.methodTextures[0] : object.baseColor);
+        for (int i = 0; i < kMaxParallaxLayers; ++i) {  // a layer without a texture: the object's base
+          const GLuint t = object.methodTextures[static_cast<std::size_t>(i) + 1];
+          g.ActiveTexture(GLenum(GL_TEXTURE0 + kUnitMethod0 + 2 + i));
+          g.BindTexture(GL_TEXTURE_2D, t ? t : object.baseColor);
+        }
+        drawSurface(frame, p, object);
+        return gl::checkGlError(g, "renderer: parallax geometry pass");
+      },
+      object.index());
 }
 
 Result<void> ParallaxMethod::draw(const FrameContext& frame, std::span<const ObjectDraw> objects) const {

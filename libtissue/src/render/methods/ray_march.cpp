@@ -176,6 +176,7 @@ Result<void> RayMarchMethod::draw(const FrameContext& frame, std::span<const Obj
       }
       setObjectUniforms(frame, program, s, texelsWide);
       drawSurface(frame, program, d);
+      frame.passes.issued(d.index());  // PassTiming::issued
     }
     return gl::checkGlError(g, "renderer: ray-march pass");
   });

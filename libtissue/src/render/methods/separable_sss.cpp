@@ -146,6 +146,7 @@ Result<void> SeparableMethod::draw(const FrameContext& frame, std::span<const Ob
         }
         g.Uniform1f(g.GetUniformLocation(program, "u_transmissionShrinkMm"), s.transmissionShrinkMm);
         drawSurface(frame, program, d);
+        frame.passes.issued(d.index());  // PassTiming::issued
       }
     }
     return gl::checkGlError(g, "renderer: separable geometry pass");

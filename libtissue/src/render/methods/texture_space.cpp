@@ -15,12 +15,6 @@
 namespace tissue::render {
 namespace {
 
-Mat4 toMat4(const glm::mat4& m) {
-  Mat4 out;
-  std::memcpy(out.data(), glm::value_ptr(m), sizeof(float) * 16);
-  return out;
-}
-
 Result<void> checkSettings(const TextureSpaceSettings& s, float objectId) {
   const std::string where =
       "renderer: texture-space object " + std::to_string(static_cast<int>(objectId) - 1);
@@ -90,12 +84,7 @@ Result<void> TextureSpaceMethod::draw(const FrameContext& frame, std::span<const
     if (auto r = checkSettings(std::get<TextureSpaceSettings>(d.object->method), d.objectId); !r) return r;
   }
   const gl::GlApi& g = frame.gl;
-  const Camera& c = frame.scene.camera;
-  IrradianceFrame view;
-  view.view = toMat4(glm::lookAt(toGlm(c.eye), toGlm(c.target), toGlm(c.up)));
-  view.projection = toMat4(glm::perspective(glm::radians(c.verticalFovDeg),
-                                            float(frame.width) / float(frame.height), c.nearMm, c.farMm));
-  view.eye = c.eye;
+  const IrradianceFrame view = cameraIrradianceFrame(frame.scene.camera, frame.width, frame.height);
   // Objects one after another, sharing the maps of their size (as Jimenez et al.'s heads).
   for (const ObjectDraw& d : objects) {
     const auto& s = std::get<TextureSpaceSettings>(d.object->method);
@@ -116,31 +105,40 @@ Result<void> TextureSpaceMethod::draw(const FrameContext& frame, std::span<const
     const IrradianceLighting lighting{&frame.lights,         frame.shadowMaps,   d.baseColor,
                                       d.normalMap,           s.albedoPreScatter, s.transmittance,
                                       s.transmissionShrinkMm};
-    auto r = frame.passes.run("texture-space:irradiance", [&] {
-      return maps.irradianceMap().render(d.mesh->vertexArray(), d.mesh->indexCount(), object,
-                                         passes.irradiance, lighting, true);
-    });
+    auto r = frame.passes.run(
+        "texture-space:irradiance",
+        [&] {
+          return maps.irradianceMap().render(d.mesh->vertexArray(), d.mesh->indexCount(), object,
+                                             passes.irradiance, lighting, true);
+        },
+        d.index());
     if (!r) return r;
     GLuint diffused = 0;
-    r = frame.passes.run("texture-space:blur", [&]() -> Result<void> {
-      if (auto done = maps.convolve(passes); !done) return done;
-      auto sum = maps.combine(passes);
-      if (!sum) return sum.error();
-      diffused = *sum;
-      return {};
-    });
+    r = frame.passes.run(
+        "texture-space:blur",
+        [&]() -> Result<void> {
+          if (auto done = maps.convolve(passes); !done) return done;
+          auto sum = maps.combine(passes);
+          if (!sum) return sum.error();
+          diffused = *sum;
+          return {};
+        },
+        d.index());
     if (!r) return r;
-    r = frame.passes.run("texture-space:final", [&] {
-      beginGeometryPass(frame);
-      const GLuint program = m_final.pick(d);
-      setFrameUniforms(frame, program);
-      g.Uniform1f(g.GetUniformLocation(program, "u_mapScale"), maps.irradianceMap().scale());
-      g.Uniform1f(g.GetUniformLocation(program, "u_albedoPreScatter"), s.albedoPreScatter);
-      g.ActiveTexture(GL_TEXTURE0 + kUnitMethod0);
-      g.BindTexture(GL_TEXTURE_2D, diffused);
-      drawSurface(frame, program, d);
-      return gl::checkGlError(g, "renderer: texture-space final pass");
-    });
+    r = frame.passes.run(
+        "texture-space:final",
+        [&] {
+          beginGeometryPass(frame);
+          const GLuint program = m_final.pick(d);
+          setFrameUniforms(frame, program);
+          g.Uniform1f(g.GetUniformLocation(program, "u_mapScale"), maps.irradianceMap().scale());
+          g.Uniform1f(g.GetUniformLocation(program, "u_albedoPreScatter"), s.albedoPreScatter);
+          g.ActiveTexture(GL_TEXTURE0 + kUnitMethod0);
+          g.BindTexture(GL_TEXTURE_2D, diffused);
+          drawSurface(frame, program, d);
+          return gl::checkGlError(g, "renderer: texture-space final pass");
+        },
+        d.index());
     if (!r) return r;
   }
   return {};
