@@ -363,11 +363,9 @@ QualityController::QualityController(QualityTable table, ControllerSettings sett
     m_costs.push_back(costModelOf(o));
   m_overheadMs = m_table.frameOverheadMs;
   m_switchMs.assign(m_table.options.size(), 0.0);
-  for (const QualityOption& o : m_table.options) {
-    const auto it = std::find(m_methods.begin(), m_methods.end(), o.method);
-    m_optionMethod.push_back(std::size_t(it - m_methods.begin()));
-    if (it == m_methods.end()) m_methods.push_back(o.method);
-  }
+  MethodIndex methods = methodIndexOf(m_table);
+  m_methods = std::move(methods.names);
+  m_optionMethod = std::move(methods.of);
   m_methodRatio.assign(m_methods.size(), 1.0);
   m_methodRatioSamples.assign(m_methods.size(), 0);
   m_switchSamples.assign(m_table.options.size(), 0);
