@@ -24,6 +24,7 @@ uniform float u_depthMax;                      // Depth_max of eq. 15, mm
 uniform float u_tMaxCap;                       // -ln(threshold) / min sigma_t, mm (1e30 without)
 uniform float u_threshold;                     // stop once exp(-tau_PM) falls below (0: never)
 uniform float u_minCosView;                    // clamp of N_S . omega_out
+uniform float u_ior;                           // relative index of the tissue; 1: no boundary
 
 const float kPi = 3.14159265358979;
 
@@ -41,6 +42,20 @@ uint pcgHash(uint v) {
 }
 float pixelJitter(uint x, uint y, uint seed) {
   return float(pcgHash(x + pcgHash(y + pcgHash(seed))) >> 8u) * (1.0 / 16777216.0);
+}
+
+// The cosine to the normal inside the tissue of a direction at cosine c outside (Snell's law).
+float insideCosine(float c) {
+  return u_ior > 1.0 ? sqrt(max(1.0 - (1.0 - c * c) / (u_ior * u_ior), 0.0)) : c;
+}
+
+// The direction inside the tissue, reversed, of light crossing the surface of normal N along -w
+// (w unit, pointing out): Snell's law, as the truth refracts (Hanrahan and Krueger 1993 §4). The
+// view path and the lights' paths refract alike; without a boundary, or from below the tangent
+// plane (a light that the boundary's transmittance T(N.L) = 0 already removes), w itself.
+vec3 insideDirection(vec3 w, vec3 N) {
+  if (u_ior <= 1.0 || dot(w, N) <= 0.0) return w;
+  return -refract(-w, N, 1.0 / u_ior);
 }
 
 float schlickPhase(float cosT, float k) {
@@ -130,7 +145,7 @@ vec4 marchSingleScattering(Frame f, int n, float jitter, float lightWeight[MAX_L
     attenuation *= exp(-u_sigmaT[layer] * (i == 0 ? jitter * dt : dt));
     for (int l = 0; l < MAX_LIGHTS; ++l) {
       if (l >= u_lightCount) break;
-      vec3 wi = lightDirection(l, M);
+      vec3 wi = insideDirection(lightDirection(l, M), f.Np);
       float phase = schlickPhase(-dot(wi, f.wo), u_schlickK[layer]);
       vec3 Lri = lightWeight[l] * u_lightRadiance[l] * reducedIntensity(f, bM, M, t, wi);
       L += u_sigmaS[layer] * phase * Lri * attenuation * dt;

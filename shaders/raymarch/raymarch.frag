@@ -6,12 +6,19 @@
 // With a boundary (u_ior > 1) the pixel is composed as François et al. 2006 §3 add a specular
 // (glossy) and a diffuse reflection to the single scattering, and as Norberg 2010 §2.2.2 light
 // "scatters directly towards the viewer" (a specular term) or "into the material":
-//   L = f_r (N.L) E                                            outer surface (common/specular.glsl)
-//     + T(N.V) [ pi u_radianceScale' L_ss(T(N.L) per light)    single scattering (eq. 1-5)
-//              + sum_l R_ms T(N.L)/T0 (N.L) E_l/pi / T0 ]      multiple scattering
+//   L = f_r (N.L) E                                                 outer surface (common/specular.glsl)
+//     + T(N.V) [ L_ss(T(N.L) (N.L) / mu'_L per light) / n^2         single scattering (eq. 1-5)
+//              + sum_l R_ms T(N.L)/T0 (N.L) E_l/pi / T0 ]           multiple scattering
 // with T(mu) = 1 - F(mu) the dielectric's transmittance and T0 = T(1): the dipole's R_ms is per
-// incident light at normal incidence, which the two T/T0 ratios carry to other angles; at
-// normal light and view the sum is exactly R_ms + pi L_ss / E (optics::semiInfiniteReflectance).
+// incident light at normal incidence, which the two T/T0 ratios carry to other angles. The single
+// scattering is marched along the refracted view path and lit along the refracted light paths
+// (march.glsl, insideDirection), as the truth's closed form (truth::layeredSlabSingleScattering,
+// Hanrahan and Krueger 1993 §4): each beam narrows by (N.L) / mu'_L entering, mu' the refracted
+// cosine, and the radiance leaving spreads over n^2 the solid angle. François et al. march
+// straight, without a boundary; straight paths through one at grazing view are up to
+// 1 / cos(theta) long where the refracted ones are at most 1 / cos(critical angle) (1.4 for
+// n = 1.4), which made the march too bright at oblique view. At normal light and view the sum is
+// exactly R_ms + pi L_ss / E (optics::semiInfiniteReflectance).
 // Variants: TISSUE_ADAPTIVE (per-pixel sample count from view angle, layer depth and screen
 // footprint, as subsurface::adaptiveSampleCount); TISSUE_SHOW_SAMPLES (radiance = samples / 100).
 
@@ -31,17 +38,16 @@ uniform float u_texelMm;          // mm per texel of the subsurface map
 uniform float u_pixelAngle;       // radians per pixel, 2 tan(fov / 2) / height
 uniform float u_cutoff;           // round-trip transmittance where the adaptive march stops
 uniform float u_sigmaMin;         // smallest extinction of any layer and channel, mm^-1
-uniform float u_ior;              // relative index of the tissue; 1: no boundary
 uniform bool u_specularOn;        // the outer surface's Fresnel-weighted lobe
 
 // Adaptive quality, as subsurface::adaptiveMarch: march only as deep as light returns from
 // (round-trip transmittance above u_cutoff), as finely as depth and footprint need.
-int adaptiveSamples(inout Frame f) {
+int adaptiveSamples(inout Frame f, float cosView) {
   float roundTrip = -log(u_cutoff) / (u_sigmaMin * (1.0 + f.cosDepth));
   f.tMax = min(f.tMax, roundTrip);
   float depthMm = f.tMax * f.cosDepth;
   float lateralMm = f.tMax * sqrt(max(1.0 - f.cosDepth * f.cosDepth, 0.0));
-  float pixelMm = distance(u_cameraPosition, f.P) * u_pixelAngle / max(dot(f.Np, f.wo), 0.1);
+  float pixelMm = distance(u_cameraPosition, f.P) * u_pixelAngle / max(cosView, 0.1);
   float stepMm = u_texelsPerStep * max(u_texelMm, pixelMm);
   float want = max(depthMm / u_depthResolution, lateralMm / stepMm);
   return clamp(int(ceil(want)), u_minSamples, u_maxSamples);
@@ -51,11 +57,15 @@ void main() {
   // A back face (a double-sided object, render::SceneObject::doubleSided) marches into the sheet
   // from its back: the surface normal and the local plane's normal are negated (the plane then
   // lies d below the back, eq. 14), as common/surface.glsl negates the shading normal.
+  // The frame's view direction is the refracted one inside (insideDirection); the boundary's
+  // weights and the specular below take the view outside, V.
   float facing = gl_FrontFacing ? 1.0 : -1.0;
-  Frame f = makeFrame(v_worldPosition, u_cameraPosition - v_worldPosition, facing * v_normal, v_tangent,
-                      vec4(facing * v_plane.xyz, v_plane.w), v_uv);
+  vec3 V = normalize(u_cameraPosition - v_worldPosition);
+  vec3 N = normalize(facing * v_normal);
+  Frame f = makeFrame(v_worldPosition, insideDirection(V, N), N, v_tangent, vec4(facing * v_plane.xyz, v_plane.w),
+                      v_uv);
 #ifdef TISSUE_ADAPTIVE
-  int n = adaptiveSamples(f);
+  int n = adaptiveSamples(f, dot(N, V));
 #else
   int n = u_samples;
 #endif
@@ -65,8 +75,7 @@ void main() {
   float jitter = u_jitter ? pixelJitter(px.x, px.y, u_seed) : 0.5;
   bool boundary = u_ior > 1.0;
   float F0 = boundary ? ((u_ior - 1.0) / (u_ior + 1.0)) * ((u_ior - 1.0) / (u_ior + 1.0)) : 0.0;
-  vec3 N = f.Np;
-  float NdotV = max(dot(N, f.wo), 0.0);
+  float NdotV = max(dot(N, V), 0.0);
   float T0 = 1.0 - F0;
   // The boundary's transmittances T(mu) = T0 x boundaryWeight(mu): the exact dielectric Fresnel
   // (Walter et al. 2007 eq. 22, common/specular.glsl) that the optics deriving the layers' albedos
@@ -79,10 +88,11 @@ void main() {
     if (l >= u_lightCount || !boundary) continue;
     vec3 L = lightDirection(l, f.P);
     float NdotL = max(dot(N, L), 0.0);
-    weight[l] = T0 * boundaryWeight(NdotL, F0);
-    irradianceIn += weight[l] / T0 * NdotL * u_lightRadiance[l];
+    float Tl = T0 * boundaryWeight(NdotL, F0);
+    weight[l] = Tl * NdotL / max(insideCosine(NdotL), 1e-4);  // the beam narrowed by refraction
+    irradianceIn += Tl / T0 * NdotL * u_lightRadiance[l];
     // The outer surface's microfacet reflection, every method's (common/specular.glsl).
-    if (u_specularOn) specular += surfaceSpecular(N, L, f.wo, F0, u_shininess) * u_lightRadiance[l];
+    if (u_specularOn) specular += surfaceSpecular(N, L, V, F0, u_shininess) * u_lightRadiance[l];
   }
   vec4 result = marchSingleScattering(f, max(n, 1), jitter, weight);
 #ifdef TISSUE_SHOW_SAMPLES
@@ -92,7 +102,7 @@ void main() {
   if (boundary) {
     float b[8];
     sampleBoundaries(f.uv, b);
-    radiance = specular + Tv * (radiance + multipleScatteringAlbedo(b) * irradianceIn / T0);
+    radiance = specular + Tv * (radiance / (u_ior * u_ior) + multipleScatteringAlbedo(b) * irradianceIn / T0);
   }
   o_radiance = vec4(radiance, 1.0);
 #endif

@@ -12,6 +12,7 @@
 #include "tissue/optics/dipole.h"
 #include "tissue/optics/monte_carlo.h"
 #include "tissue/optics/phase_function.h"
+#include "tissue/truth/slab_reference.h"
 
 namespace tissue::optics {
 namespace {
@@ -22,6 +23,35 @@ TEST(Reflectance, SingleScatteringOfAnIsotropicIndexMatchedHalfSpaceHasItsClosed
   EXPECT_NEAR(singleScatteringReflectance(0.2, 0.8, 0.0, 1.0), 0.5 * alpha * (1.0 - std::log(2.0)), 1e-6);
   // At normal view: alpha p(-1) / 2 = alpha / (8 pi) (Schlick k(0) = 0 is isotropic).
   EXPECT_NEAR(singleScatteringNormalRadiance(0.2, 0.8, 0.0, 1.0), alpha / (8.0 * std::numbers::pi), 1e-12);
+}
+
+TEST(Reflectance, SingleScatteringBehindABoundaryIsTheTruthsClosedFormOverTheExitHemisphere) {
+  // The truth's closed form refracts the paths and spreads the radiance leaving over n^2 the
+  // solid angle (truth::layeredSlabSingleScattering, Hanrahan and Krueger 1993 §4). With g = 0
+  // the two phase functions are the same, so the normal radiance and the reflectance must match
+  // it: the radiance straight up, and its cosine-weighted integral over the exit hemisphere.
+  const double sigmaA = 0.3, sigmaS = 2.0, eta = 1.4;
+  truth::TruthMaterial m;
+  truth::TruthLayer l;
+  l.sigmaA = truth::Rgb{sigmaA, sigmaA, sigmaA};
+  l.sigmaS = truth::Rgb{sigmaS, sigmaS, sigmaS};
+  l.g = {0.0, 0.0, 0.0};
+  l.n = eta;
+  m.layers = {l};
+  // Light radiance 1 / pi: irradiance 1 on the surface.
+  const double up = truth::layeredSlabSingleScattering(m, {0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 1.0f},
+                                                       {1.0 / std::numbers::pi, 0.0, 0.0})[0];
+  EXPECT_NEAR(singleScatteringNormalRadiance(sigmaA, sigmaS, 0.0, eta), up, 1e-6 * up);
+  double reflectance = 0.0;
+  constexpr int kSteps = 4000;
+  for (int i = 0; i < kSteps; ++i) {
+    const double mu = (i + 0.5) / kSteps;
+    const float sine = float(std::sqrt(1.0 - mu * mu));
+    reflectance += truth::layeredSlabSingleScattering(m, {sine, 0.0f, float(mu)}, {0.0f, 0.0f, 1.0f},
+                                                      {1.0 / std::numbers::pi, 0.0, 0.0})[0] *
+                   mu * 2.0 * std::numbers::pi / kSteps;
+  }
+  EXPECT_NEAR(singleScatteringReflectance(sigmaA, sigmaS, 0.0, eta), reflectance, 1e-3 * reflectance);
 }
 
 TEST(Reflectance, ForwardScatteringAndFresnelLowerTheSingleScatteredPart) {

@@ -17,27 +17,42 @@ double entryFresnel(double eta, double cosIncident) {
   return fresnelReflectance(1.0, eta, cosIncident).reflectance;
 }
 
+namespace {
+
+// n^2 for a boundary (eta > 1), 1 without one (entryFresnel's convention).
+double radianceSpread(double eta) {
+  return eta > 1.0 ? eta * eta : 1.0;
+}
+
+}  // namespace
+
 double singleScatteringNormalRadiance(double sigmaA, double sigmaS, double g, double eta) {
   const double sigmaT = sigmaA + sigmaS;
   if (!(sigmaT > 0.0)) return 0.0;
   const double t = 1.0 - entryFresnel(eta, 1.0);
-  // Light travels down (0, 0, -1), leaves up (0, 0, 1): the cosine of the turn is -1.
-  return t * t * (sigmaS / sigmaT) * schlickPhase(-1.0, schlickKFromG(g)) / 2.0;
+  // Light travels down (0, 0, -1), leaves up (0, 0, 1): the cosine of the turn is -1. Leaving the
+  // denser medium the radiance spreads over n^2 the solid angle (L / n^2 is invariant along a
+  // ray: Hanrahan and Krueger 1993 §4, the truth's layeredSlabSingleScattering).
+  return t * t * (sigmaS / sigmaT) * schlickPhase(-1.0, schlickKFromG(g)) / 2.0 / radianceSpread(eta);
 }
 
 double singleScatteringReflectance(double sigmaA, double sigmaS, double g, double eta) {
   const double sigmaT = sigmaA + sigmaS;
   if (!(sigmaT > 0.0)) return 0.0;
-  // At depth z the beam is E e^(-sigma_t z); scattered towards mu_o it is attenuated by
-  // e^(-sigma_t z / mu_o) along dz / mu_o: L = E alpha p / (1 + mu_o) with alpha = sigma_s / sigma_t.
-  // Exit direction (sin, 0, mu_o) averaged over the azimuth: the turn from (0, 0, -1) has cos = -mu_o.
+  // At depth z the beam is E e^(-sigma_t z); scattered towards the refracted exit cosine mu' it is
+  // attenuated by e^(-sigma_t z / mu') along dz / mu': L' = E alpha p / (1 + mu') inside, with
+  // alpha = sigma_s / sigma_t, and L = (1 - F(mu_o)) L' / n^2 outside (Hanrahan and Krueger 1993
+  // §4: the view path refracts, Snell's law sin_o = n sin'). Exit direction (sin, 0, mu') averaged
+  // over the azimuth: the turn from (0, 0, -1) has cos = -mu'.
   const double tIn = 1.0 - entryFresnel(eta, 1.0), albedo = sigmaS / sigmaT, k = schlickKFromG(g);
+  const double spread = radianceSpread(eta);
   constexpr int kSteps = 2000;
   double sum = 0.0;
   for (int i = 0; i < kSteps; ++i) {
     const double mu = (i + 0.5) / kSteps;
     const double tOut = 1.0 - entryFresnel(eta, mu);
-    sum += tOut * schlickPhase(-mu, k) / (1.0 + mu) * mu;
+    const double inside = eta > 1.0 ? std::sqrt(1.0 - (1.0 - mu * mu) / (eta * eta)) : mu;
+    sum += tOut * schlickPhase(-inside, k) / (1.0 + inside) * mu / spread;
   }
   return tIn * albedo * sum * (2.0 * std::numbers::pi / kSteps);
 }

@@ -19,14 +19,16 @@ struct Reflectance {
 };
 
 /// Single scattering of a half-space below an ambient of index 1 under normally incident
-/// light, as the ray march computes it (no refraction; the light and view paths straight):
-/// L(mu_o) / E = (1 - F(0)) (1 - F(mu_o)) alpha p(pi - theta_o) / (1 + mu_o) per steradian,
-/// with the march's phase function, Schlick's of k = schlickKFromG(g) (François et al. 2006 §3), integrated
-/// over the exit hemisphere with mu_o. `sigmaA`, `sigmaS` mm^-1, `eta` the relative index (>= 1).
+/// light, as the ray march computes it with a boundary (the view path refracted, Hanrahan and
+/// Krueger 1993 §4): L(mu_o) / E = (1 - F(0)) (1 - F(mu_o)) alpha p(pi - theta') / ((1 + mu') n^2)
+/// per steradian, mu' = cos theta' the refracted exit cosine (Snell), with the march's phase
+/// function, Schlick's of k = schlickKFromG(g) (François et al. 2006 §3), integrated over the exit
+/// hemisphere with mu_o. `sigmaA`, `sigmaS` mm^-1, `eta` the relative index (>= 1; 1: no boundary).
 double singleScatteringReflectance(double sigmaA, double sigmaS, double g, double eta);
 
 /// The single-scattered radiance factor at normal view under normal light, L(1) / E in sr^-1:
-/// (1 - F(0))^2 alpha p(-1) / 2 (the integrand above at mu_o = 1; Schlick's phase of k = schlickKFromG(g)).
+/// (1 - F(0))^2 alpha p(-1) / (2 n^2) (the integrand above at mu_o = 1; Schlick's phase of k =
+/// schlickKFromG(g)).
 double singleScatteringNormalRadiance(double sigmaA, double sigmaS, double g, double eta);
 
 /// The band's reflectance parts: single as singleScatteringReflectance; multiple as the
