@@ -50,8 +50,9 @@ double singleScatteringReflectance(double sigmaA, double sigmaS, double g, doubl
   double sum = 0.0;
   for (int i = 0; i < kSteps; ++i) {
     const double mu = (i + 0.5) / kSteps;
-    const double tOut = 1.0 - entryFresnel(eta, mu);
-    const double inside = eta > 1.0 ? std::sqrt(1.0 - (1.0 - mu * mu) / (eta * eta)) : mu;
+    // One Fresnel evaluation gives both the exit transmittance and the refracted cosine mu'.
+    const FresnelResult f = eta > 1.0 ? fresnelReflectance(1.0, eta, mu) : FresnelResult{0.0, mu};
+    const double tOut = 1.0 - f.reflectance, inside = f.cosTransmitted;
     sum += tOut * schlickPhase(-inside, k) / (1.0 + inside) * mu / spread;
   }
   return tIn * albedo * sum * (2.0 * std::numbers::pi / kSteps);

@@ -3,7 +3,7 @@
 /// The reflectance of a homogeneous semi-infinite medium lit along its normal, split the way the
 /// ray-marched method renders it (François et al. 2006 §2 single scattering; Jensen et al. 2001
 /// §2.4: BSSRDF = single-scattering term + diffusion term): the single-scattered part as the
-/// renderer's march computes it (no refraction, exit Fresnel), the multiple-scattered part as
+/// renderer's march computes it (refracted paths, Fresnel at entry and exit), the multiple-scattered part as
 /// the dipole's total diffuse reflectance, and their sum, the albedo every shading method takes
 /// its colour from (scene::opticalAlbedo). Coefficients in mm^-1; reflectances are unitless
 /// fractions of the incident irradiance.
