@@ -87,6 +87,38 @@ TEST(SceneBudget, TheControllerChoosesPerOrganAndTheFarOneFallsBackToTheLitTier)
   EXPECT_TRUE(scene.renderImage(240, 180).ok());
 }
 
+// Frames whose organs the host set to table options (no budget) teach the controller those
+// options' costs; the first frame of an option (its one-off work) teaches nothing; an organ with a
+// method of its own (setMethod) stops the learning, its cost not being any option's.
+TEST(SceneBudget, FramesOfOptionsTheHostChoseTeachTheControllerTheirCosts) {
+  Scene scene = threeLivers();
+  const quality::QualityTable& table = quality::defaultQualityTable();
+  const int lit = table.find("lit", "default"), sep = table.find("separable", "preintegrated-17");
+  ASSERT_GE(lit, 0);
+  ASSERT_GE(sep, 0);
+  ASSERT_TRUE(scene.setMethodOption(0, table.options[std::size_t(sep)]).ok());
+  for (OrganId o : {OrganId(1), OrganId(2)})
+    ASSERT_TRUE(scene.setMethodOption(o, table.options[std::size_t(lit)]).ok());
+  ASSERT_NE(scene.qualityController(), nullptr);
+  const auto samples = [&](int option) {
+    return scene.qualityController()->costs()[std::size_t(option)].samples;
+  };
+  ASSERT_TRUE(scene.renderImage(240, 180).ok());  // every option new: nothing learned
+  EXPECT_EQ(samples(sep), 0);
+  EXPECT_EQ(samples(lit), 0);
+  for (int f = 0; f < 4; ++f)
+    ASSERT_TRUE(scene.renderImage(240, 180).ok());
+  EXPECT_EQ(samples(sep), 4);
+  EXPECT_GE(samples(lit), 8);  // two organs a frame (and its cost class's siblings with it)
+  EXPECT_GT(scene.qualityController()->costs()[std::size_t(sep)].predictMs(1000.0), 0.0);
+  // A method of its own on one organ: no frame is learned from.
+  ASSERT_TRUE(scene.setMethod(2, render::ShadingMethod::Lit).ok());
+  for (int f = 0; f < 2; ++f)
+    ASSERT_TRUE(scene.renderImage(240, 180).ok());
+  EXPECT_EQ(samples(sep), 4);
+  EXPECT_TRUE(scene.budgetChoices().empty());
+}
+
 TEST(SceneBudget, ABudgetMustBeAFiniteNumberOfMs) {
   Scene scene = threeLivers();
   EXPECT_FALSE(scene.setBudgetMs(-1.0).ok());

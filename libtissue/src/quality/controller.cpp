@@ -126,50 +126,6 @@ MeshWork meshWorkOf(std::string_view method, bool hasNormalMap) {
   return w;
 }
 
-CostModel costModelOf(const QualityOption& option) {
-  CostModel m;
-  m.fixedMs = m.priorFixedMs = option.fixedMs;
-  m.msPerPx = m.priorMsPerPx = option.msPerPx;
-  return m;
-}
-
-void observeCost(CostModel& m, double px, double ms, double learningRate) {
-  if (!std::isfinite(px) || !std::isfinite(ms)) return;
-  // Until 1 / rate samples the weights are a running mean (an EMA started without bias).
-  const double a = std::clamp(std::max(learningRate, 1.0 / double(m.samples + 1)), 0.0, 1.0);
-  m.w = (1 - a) * m.w + a;
-  m.wx = (1 - a) * m.wx + a * px;
-  m.wxx = (1 - a) * m.wxx + a * px * px;
-  m.wy = (1 - a) * m.wy + a * ms;
-  m.wxy = (1 - a) * m.wxy + a * px * ms;
-  ++m.samples;
-  const double mx = m.wx / m.w, my = m.wy / m.w;
-  const double var = m.wxx / m.w - mx * mx;
-  const double cov = m.wxy / m.w - mx * my;
-  if (m.samples >= 3 && var > (0.05 * mx) * (0.05 * mx) && var > 1e-12) {
-    const double b = cov / var;
-    if (b >= 0.0) {
-      m.msPerPx = b;
-      m.fixedMs = my - b * mx;
-      if (m.fixedMs < 0.0) {  // through the origin instead
-        m.fixedMs = 0.0;
-        m.msPerPx = m.wxy / std::max(m.wxx, 1e-30);
-      }
-      return;
-    }
-  }
-  // The px hardly vary: the prior's shape, scaled to the measured level.
-  const double prior = m.priorFixedMs + m.priorMsPerPx * mx;
-  if (prior > 1e-12) {
-    const double k = my / prior;
-    m.fixedMs = k * m.priorFixedMs;
-    m.msPerPx = k * m.priorMsPerPx;
-  } else {
-    m.fixedMs = my;
-    m.msPerPx = 0.0;
-  }
-}
-
 ViewClass viewClassOf(const ObjectView& v, double screenPx, const ControllerSettings& s) {
   if (v.footprintPx >= s.closeUpFraction * screenPx ||
       (s.closeUpDistanceMm > 0.0 && v.distanceMm < s.closeUpDistanceMm))
@@ -366,8 +322,7 @@ QualityController::QualityController(QualityTable table, ControllerSettings sett
   MethodIndex methods = methodIndexOf(m_table);
   m_methods = std::move(methods.names);
   m_optionMethod = std::move(methods.of);
-  m_methodRatio.assign(m_methods.size(), 1.0);
-  m_methodRatioSamples.assign(m_methods.size(), 0);
+  m_methodRatios.assign(m_methods.size(), {});
   m_switchSamples.assign(m_table.options.size(), 0);
   m_passMs.assign(m_methods.size(), 0.0);
   m_passSamples.assign(m_methods.size(), 0);
@@ -377,13 +332,10 @@ std::vector<CostModel> QualityController::planningCosts() const {
   std::vector<CostModel> out = m_costs;
   for (std::size_t o = 0; o < out.size(); ++o) {
     if (out[o].samples > 0) continue;
-    const std::size_t m = m_optionMethod[o];
-    const double ratio = m_methodRatioSamples[m] > 0 ? m_methodRatio[m]
-                         : m_allRatioSamples > 0     ? m_allRatio
-                                                     : 1.0;
-    const double k = ratio * std::max(1.0, m_settings.unmeasuredCostFactor);
-    out[o].fixedMs *= k;
-    out[o].msPerPx *= k;
+    const auto ratio = termRatiosOf(m_methodRatios[m_optionMethod[o]], termRatiosOf(m_allRatios, {1.0, 1.0}));
+    const double k = std::max(1.0, m_settings.unmeasuredCostFactor);
+    out[o].fixedMs *= ratio[0] * k;
+    out[o].msPerPx *= ratio[1] * k;
   }
   return out;
 }
@@ -407,9 +359,15 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
   const double tail = 1.0 + std::max(0.0, s.tailZ) * frameSpread();
   const std::vector<CostModel> costs = planningCosts();
   const std::vector<double> passMs = planningPassMs();
-  // A new budget or a new set of objects: the held plan was made for something else.
-  bool replace = m_plan.option.size() != objects.size() || budgetMs != m_budgetMs;
-  m_budgetMs = budgetMs;
+  // A new set of objects: the held plan was made for something else. A new budget (one that
+  // differs from the held plan's by more than the gain margin): the plan is searched again at
+  // once and taken for any gain, but a held plan that fits it is left only where the switch
+  // frame fits too (a host's new budget is no reason to break it once). A budget nudged by less
+  // (a host setting it each frame from a measured refresh) is the same budget: the held plan's
+  // hysteresis stands.
+  bool replace = m_plan.option.size() != objects.size();
+  const bool newBudget = !(std::abs(budgetMs - m_budgetMs) <= s.gainMargin * m_budgetMs);
+  if (newBudget || replace) m_budgetMs = budgetMs;
   if (!replace) {
     // The held plan must still be allowed for each object (a footprint below the threshold
     // takes the fallback at once).
@@ -425,10 +383,12 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
     // The plan is searched only where it may change: held too long to keep without asking, or
     // over the budget.
     const bool overHeld = held.predictedMs * tail > budgetMs * (1.0 + s.overBudgetTolerance);
-    if (m_age >= s.holdFrames || overHeld) {
+    const bool due = m_age >= s.holdFrames || newBudget;
+    if (due || overHeld) {
       best = choosePlan(m_table, costs, m_overheadMs, objects, screenPx, budgetMs / tail, s, passMs);
       const bool over = overHeld && best.predictedMs < held.predictedMs;
-      bool gains = m_age >= s.holdFrames && best.expectedError < held.expectedError * (1.0 - s.gainMargin);
+      bool gains = newBudget ? best.expectedError < held.expectedError - 1e-12
+                             : due && best.expectedError < held.expectedError * (1.0 - s.gainMargin);
       if (gains) {
         // The switch frame itself must fit: the new plan plus the one-off costs of the options
         // it gives objects anew (a held plan that fits is no reason to break the budget once).
@@ -482,52 +442,58 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
   return m_choices;
 }
 
+void QualityController::learnObject(int option, double px, double ms) {
+  if (!std::isfinite(ms) || !std::isfinite(px)) return;
+  const auto o = std::size_t(option);
+  observeCost(m_costs[o], px, ms, m_settings.learningRate);
+  // One work, one cost (QualityOption::costClass): a sample of deon-11 is one of
+  // preintegrated-11 too, so that options of one cost are chosen by error, not by their noise.
+  if (const int cls = m_table.options[o].costClass; cls >= 0)
+    for (std::size_t sib = 0; sib < m_costs.size(); ++sib)
+      if (m_table.options[sib].costClass == cls) m_costs[sib] = m_costs[o];
+  // Measured over prior per cost term (planningCosts). The prior is an atlas frame's, one object
+  // with its method's passes: the measured side adds them (to the fixed term).
+  const QualityOption& opt = m_table.options[o];
+  const std::size_t m = m_optionMethod[o];
+  const double a = opt.fixedMs, b = opt.msPerPx * std::max(0.0, px);
+  observeTermRatios(m_methodRatios[m], a, b, ms + m_passMs[m], m_settings.learningRate);
+  observeTermRatios(m_allRatios, a, b, ms + m_passMs[m], m_settings.learningRate);
+}
+
+double QualityController::learnPasses(std::span<const PassSample> passes, const std::vector<bool>& learn) {
+  double passesMs = 0.0;
+  for (const PassSample& p : passes) {
+    const auto it = std::find(m_methods.begin(), m_methods.end(), p.method);
+    if (it == m_methods.end() || !std::isfinite(p.ms)) continue;
+    const auto m = std::size_t(it - m_methods.begin());
+    passesMs += std::max(0.0, p.ms);
+    if (learn[m]) runningEma(m_passMs[m], m_passSamples[m], std::max(0.0, p.ms), m_settings.learningRate);
+  }
+  return passesMs;
+}
+
 void QualityController::observe(std::span<const CostSample> samples, std::span<const PassSample> passes,
                                 double frameMs) {
   if (m_updates <= 1) return;  // the first frame builds everything: no steady cost
   std::vector<int> switchedTo;
   for (const ObjectChoice& c : m_choices)
     if (c.switched) switchedTo.push_back(c.option);
-  // The methods' own passes: learned where none of the method's objects switched (a switch
-  // frame's one-off work, a first kernel table, is not the method's steady cost).
-  double passesMs = 0.0;
-  std::vector<int> objectsOfMethod(m_methods.size(), 0);
-  std::vector<bool> switchedMethod(m_methods.size(), false);
+  // The methods' own passes: learned where the method has objects and none of them switched (a
+  // switch frame's one-off work, a first kernel table, is not the method's steady cost).
+  std::vector<bool> steady(m_methods.size(), false), switchedMethod(m_methods.size(), false);
   for (const ObjectChoice& c : m_choices) {
     const std::size_t m = m_optionMethod[std::size_t(c.option)];
-    ++objectsOfMethod[m];
+    steady[m] = true;
     if (c.switched) switchedMethod[m] = true;
   }
-  for (const PassSample& p : passes) {
-    const auto it = std::find(m_methods.begin(), m_methods.end(), p.method);
-    if (it == m_methods.end() || !std::isfinite(p.ms)) continue;
-    const auto m = std::size_t(it - m_methods.begin());
-    passesMs += std::max(0.0, p.ms);
-    if (objectsOfMethod[m] > 0 && !switchedMethod[m])
-      runningEma(m_passMs[m], m_passSamples[m], std::max(0.0, p.ms), m_settings.learningRate);
-  }
+  for (std::size_t m = 0; m < steady.size(); ++m)
+    steady[m] = steady[m] && !switchedMethod[m];
+  const double passesMs = learnPasses(passes, steady);
   double objectsMs = 0.0;
   for (const CostSample& c : samples) {
     if (c.object >= m_choices.size() || m_choices[c.object].switched) continue;
-    const int o = m_choices[c.object].option;
-    const double px = m_lastObjects[c.object].footprintPx;
-    observeCost(m_costs[std::size_t(o)], px, c.ms, m_settings.learningRate);
-    // One work, one cost (QualityOption::costClass): a sample of deon-11 is one of
-    // preintegrated-11 too, so that options of one cost are chosen by error, not by their noise.
-    if (const int cls = m_table.options[std::size_t(o)].costClass; cls >= 0)
-      for (std::size_t sib = 0; sib < m_costs.size(); ++sib)
-        if (m_table.options[sib].costClass == cls) m_costs[sib] = m_costs[std::size_t(o)];
-    objectsMs += c.ms;
-    // Measured over prior (planningCosts), per method and over all. The prior is an atlas
-    // frame's, one object with its method's passes: the measured side adds them.
-    const QualityOption& opt = m_table.options[std::size_t(o)];
-    const double prior = opt.fixedMs + opt.msPerPx * std::max(0.0, px);
-    const std::size_t m = m_optionMethod[std::size_t(o)];
-    if (prior > 1e-9 && std::isfinite(c.ms)) {
-      const double ratio = std::clamp((c.ms + m_passMs[m]) / prior, 0.05, 20.0);
-      runningEma(m_methodRatio[m], m_methodRatioSamples[m], ratio, m_settings.learningRate);
-      runningEma(m_allRatio, m_allRatioSamples, ratio, m_settings.learningRate);
-    }
+    learnObject(m_choices[c.object].option, m_lastObjects[c.object].footprintPx, c.ms);
+    if (std::isfinite(c.ms)) objectsMs += c.ms;
   }
   if (!switchedTo.empty()) {
     // The excess over the plan's steady prediction, shared among the options switched to.
@@ -546,10 +512,33 @@ void QualityController::observe(std::span<const CostSample> samples, std::span<c
     }
     runningEma(m_frameMean, m_meanSamples, frameMs, m_settings.learningRate);
   }
-  if (std::isfinite(frameMs)) {
-    const double a = std::clamp(m_settings.learningRate, 0.0, 1.0);
-    m_overheadMs = (1 - a) * m_overheadMs + a * std::max(0.0, frameMs - objectsMs - passesMs);
+  learnOverhead(frameMs - objectsMs - passesMs);
+}
+
+void QualityController::observeUnplanned(std::span<const OptionCostSample> samples,
+                                         std::span<const PassSample> passes, double frameMs) {
+  const auto valid = [&](const OptionCostSample& c) {
+    return c.option >= 0 && std::size_t(c.option) < m_table.options.size();
+  };
+  if (samples.empty() || !std::all_of(samples.begin(), samples.end(), valid) ||
+      std::any_of(samples.begin(), samples.end(), [](const OptionCostSample& c) { return c.firstFrame; }))
+    return;
+  std::vector<bool> used(m_methods.size(), false);
+  for (const OptionCostSample& c : samples)
+    used[m_optionMethod[std::size_t(c.option)]] = true;
+  const double passesMs = learnPasses(passes, used);
+  double objectsMs = 0.0;
+  for (const OptionCostSample& c : samples) {
+    learnObject(c.option, c.footprintPx, c.ms);
+    if (std::isfinite(c.ms)) objectsMs += c.ms;
   }
+  learnOverhead(frameMs - objectsMs - passesMs);
+}
+
+void QualityController::learnOverhead(double ms) {
+  if (!std::isfinite(ms)) return;
+  const double a = std::clamp(m_settings.learningRate, 0.0, 1.0);
+  m_overheadMs = (1 - a) * m_overheadMs + a * std::max(0.0, ms);
 }
 
 }  // namespace tissue::quality

@@ -226,4 +226,15 @@ const QualityTable& defaultQualityTable() {
   return table;
 }
 
+Result<QualityTable> qualityTableOrDefault(const std::filesystem::path& atlasJson) {
+  QualityTable table = defaultQualityTable();
+  if (!atlasJson.empty()) {
+    auto loaded = loadQualityTable(atlasJson);
+    if (!loaded) return loaded.error();
+    table = std::move(*loaded);
+  }
+  if (table.options.empty()) return Error{"quality table " + table.source + ": it has no options"};
+  return table;
+}
+
 }  // namespace tissue::quality

@@ -78,7 +78,11 @@ struct Scene::Impl {
     bool moved = false;                            ///< changed at the last upload (deforming)
     bool hasNormalMap = false;                     ///< its material has one (the lit method's tangents)
     double importance = 1.0;                       ///< OrganDesc::importance
-    int budgetOption = -1;                         ///< the quality table option it has; -1: its own method
+    /// The quality table option it is drawn with (the budget's choice or setMethodOption's); -1:
+    /// a method of its own (setMethod, OrganDesc::method)
+    int budgetOption = -1;
+    bool optionNew = true;     ///< its method changed since the last frame learned from
+    double footprintPx = 0.0;  ///< px covered at the last render (organView)
     std::map<int, render::MethodSettings> optionSettings;  ///< built once per option
     std::vector<int> offered;                              ///< table options its material offers
     std::size_t objectIndex = 0;  ///< its index in render::Scene::objects (buildObjects)
@@ -100,24 +104,31 @@ struct Scene::Impl {
   std::optional<quality::QualityController> controller;
   std::vector<BudgetChoice> budgetChoices;
 
-  /// The controller's choice for this frame (after frame()), as each organ's method.
+  /// The controller, made at the first budget or setMethodOption (SceneSettings::qualityTable).
+  Result<void> ensureController() {
+    if (controller) return {};
+    auto table = quality::qualityTableOrDefault(settings.qualityTable);
+    if (!table) return Error{"budget: " + table.error().message};
+    controller.emplace(std::move(*table), settings.quality);
+    return {};
+  }
+  /// The controller's choice for this frame (after frame()), as each organ's method. Without a
+  /// budget, each organ's footprint for the costs learned from the host's choice (learnBudget).
   Result<void> applyBudget(int width, int height) {
-    if (budgetMs <= 0.0 || !renderer || organs.empty()) return {};
-    if (!controller) {
-      quality::QualityTable table = quality::defaultQualityTable();
-      if (!settings.qualityTable.empty()) {
-        auto loaded = quality::loadQualityTable(settings.qualityTable);
-        if (!loaded) return loaded.error();
-        table = std::move(*loaded);
-      }
-      if (table.options.empty()) return Error{"budget: the quality table has no options"};
-      controller.emplace(std::move(table), settings.quality);
+    if (!renderer || organs.empty()) return {};
+    if (budgetMs <= 0.0) {
+      if (controller)
+        for (Organ& o : organs)
+          o.footprintPx = organView(o.assets.bounds, o.model, lastCamera, width, height).footprintPx;
+      return {};
     }
+    if (auto c = ensureController(); !c) return c.error();
     const quality::QualityTable& table = controller->table();
     std::vector<quality::ObjectView> views;
     for (Organ& o : organs) {
       if (o.offered.empty()) o.offered = offeredOptions(table, o.assets);
       quality::ObjectView v = organView(o.assets.bounds, o.model, lastCamera, width, height);
+      o.footprintPx = v.footprintPx;
       v.deforming = o.moved;
       v.importance = o.importance;
       v.hasNormalMap = o.hasNormalMap;
@@ -138,6 +149,7 @@ struct Scene::Impl {
         }
         o.method = it->second;
         o.budgetOption = c.option;
+        o.optionNew = true;
       }
       budgetChoices.push_back({c.method, c.setting, views[i].footprintPx, c.predictedMs, c.expectedRelRms,
                                std::string(quality::viewClassFrame(c.view)), c.fallback, c.mesh});
@@ -145,31 +157,46 @@ struct Scene::Impl {
     return {};
   }
   /// The last frame's measured costs: each organ's own passes and draws (framePassCosts) and each
-  /// method's passes of no object; the instruments' and the frame's passes are overhead.
+  /// method's passes of no object; the instruments' and the frame's passes are overhead. Under a
+  /// budget they teach the controller's plan; without one, where every organ is drawn with a
+  /// table option (setMethodOption), the costs of the options the host chose, so that a budget
+  /// set later plans from this machine's costs (QualityController::observeUnplanned).
   void learnBudget(double frameMs) {
-    if (budgetMs <= 0.0 || !controller || !renderer || budgetChoices.size() != organs.size()) return;
+    if (!controller || !renderer) return;
+    const bool planned = budgetMs > 0.0;
+    if (planned
+            ? budgetChoices.size() != organs.size()
+            : std::any_of(organs.begin(), organs.end(), [](const Organ& o) { return o.budgetOption < 0; }))
+      return;
     // The rest of a pass of several organs goes by covered pixels times the option's per-pixel
     // cost (the table's, relative between settings drawn in one pass).
     std::vector<double> weights(scene.objects.size(), 0.0);
     const quality::QualityTable& table = controller->table();
-    for (std::size_t i = 0; i < organs.size(); ++i) {
-      const int o = controller->choices()[i].option;
-      const double perPx = o >= 0 ? table.options[std::size_t(o)].msPerPx : 0.0;
-      weights[organs[i].objectIndex] = std::max(0.0, budgetChoices[i].footprintPx) * std::max(perPx, 1e-9);
-    }
+    for (const Organ& o : organs)
+      weights[o.objectIndex] =
+          std::max(0.0, o.footprintPx) * std::max(table.options[std::size_t(o.budgetOption)].msPerPx, 1e-9);
     const FramePassCosts costs = framePassCosts(renderer->lastTimings(), weights);
-    std::vector<quality::CostSample> samples;
     std::vector<bool> used(costs.methodMs.size(), false);
-    for (std::size_t i = 0; i < organs.size(); ++i) {
-      samples.push_back({i, costs.objectMs[organs[i].objectIndex]});
-      used[std::size_t(render::shadingMethod(organs[i].method))] = true;
-    }
+    for (const Organ& o : organs)
+      used[std::size_t(render::shadingMethod(o.method))] = true;
     std::vector<quality::PassSample> passes;
     for (std::size_t m = 0; m < used.size(); ++m)
       if (used[m])
         passes.push_back(
             {std::string(render::shadingMethodName(render::ShadingMethod(m))), costs.methodMs[m]});
-    controller->observe(samples, passes, frameMs);
+    if (planned) {
+      std::vector<quality::CostSample> samples;
+      for (std::size_t i = 0; i < organs.size(); ++i)
+        samples.push_back({i, costs.objectMs[organs[i].objectIndex]});
+      controller->observe(samples, passes, frameMs);
+    } else {
+      std::vector<quality::OptionCostSample> samples;
+      for (const Organ& o : organs)
+        samples.push_back({o.budgetOption, o.footprintPx, costs.objectMs[o.objectIndex], o.optionNew});
+      controller->observeUnplanned(samples, passes, frameMs);
+    }
+    for (Organ& o : organs)
+      o.optionNew = false;
   }
 
   mesh::SurfaceWork meshWork(const Organ& o, render::ShadingMethod method) const {
@@ -369,6 +396,7 @@ Result<void> Scene::setMethod(OrganId id, render::ShadingMethod method) {
   if (!settings) return settings.error();
   (*o)->method = std::move(*settings);
   (*o)->budgetOption = -1;  // a budget's next choice replaces it
+  (*o)->optionNew = true;
   m_impl->syncMeshWork(**o, method);
   return {};
 }
@@ -379,8 +407,11 @@ Result<void> Scene::setMethodOption(OrganId id, const quality::QualityOption& op
   if (!m_impl->renderer) return Error{"setMethodOption: this scene has no renderer (SceneSettings::gl)"};
   auto settings = methodOfOption(option, (*o)->assets, (*o)->textures, (*o)->choices);
   if (!settings) return settings.error();
+  // The option's index in the controller's table: its frames teach the controller its cost.
+  if (auto c = m_impl->ensureController(); !c) return c.error();
   (*o)->method = std::move(*settings);
-  (*o)->budgetOption = -1;
+  (*o)->budgetOption = m_impl->controller->table().find(option.method, option.setting);
+  (*o)->optionNew = true;
   m_impl->syncMeshWork(**o, render::shadingMethod((*o)->method));
   return {};
 }

@@ -441,13 +441,9 @@ Result<BudgetBenchResult> runBudgetBench(const BudgetBenchConfig& config) {
   out.output.report.images.push_back(
       {"truth.png", toneMapped(bench.truthLinear, config.width, config.height)});
   // 4 every table setting on every organ.
-  quality::QualityTable table = quality::defaultQualityTable();
-  if (!settings.qualityTable.empty()) {
-    auto loaded = quality::loadQualityTable(settings.qualityTable);
-    if (!loaded) return loaded.error();
-    table = std::move(*loaded);
-  }
-  if (table.options.empty()) return Error{"budget bench: the quality table has no options"};
+  auto loadedTable = quality::qualityTableOrDefault(settings.qualityTable);
+  if (!loadedTable) return Error{"budget bench: " + loadedTable.error().message};
+  const quality::QualityTable table = std::move(*loadedTable);
   std::map<std::string, std::tuple<double, Image8, Image8>> bestOfMethod;  // rel RMS, frame, error
   std::vector<std::vector<Float3>> fixedImages;  // each fixed run's last frame, linear
   for (const quality::QualityOption& option : table.options) {

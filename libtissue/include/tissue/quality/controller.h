@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "tissue/quality/cost_model.h"
 #include "tissue/quality/quality_table.h"
 
 namespace tissue::quality {
@@ -73,23 +74,6 @@ struct MeshWork {
 /// The mesh work of `method` ("lit", "separable", "texture-space", "ray-march", "parallax").
 MeshWork meshWorkOf(std::string_view method, bool hasNormalMap);
 
-/// A learned cost: ms = fixedMs + msPerPx * px, with the EMA'd normal equations behind it.
-struct CostModel {
-  double fixedMs = 0.0;  ///< ms
-  double msPerPx = 0.0;  ///< ms per covered pixel
-  // Exponentially weighted sums of 1, px, px^2, ms, px ms (the normal equations).
-  double w = 0.0, wx = 0.0, wxx = 0.0, wy = 0.0, wxy = 0.0;
-  double priorFixedMs = 0.0, priorMsPerPx = 0.0;  ///< the shape kept while px hardly varies
-  int samples = 0;
-  double predictMs(double px) const { return fixedMs + msPerPx * px; }
-};
-/// A cost model starting at the table's prior.
-CostModel costModelOf(const QualityOption& option);
-/// One measured sample: `ms` spent on an object of `px` covered pixels. The fit is the
-/// exponentially weighted least squares of (1, px) -> ms; while the samples' px hardly vary it
-/// keeps the prior's shape and scales it to the measured level.
-void observeCost(CostModel& model, double px, double ms, double learningRate);
-
 /// The atlas frame `view` resembles under `settings`, for a screen of `screenPx` pixels.
 ViewClass viewClassOf(const ObjectView& view, double screenPx, const ControllerSettings& settings = {});
 
@@ -144,6 +128,14 @@ struct CostSample {
   double ms = 0.0;         ///< ms spent on it: its own passes (render::PassTiming::object)
 };
 
+/// One object's measured cost on a frame the controller did not plan (observeUnplanned).
+struct OptionCostSample {
+  int option = -1;           ///< table index of the option it was drawn with
+  double footprintPx = 0.0;  ///< px covered
+  double ms = 0.0;           ///< ms spent on it: its own passes
+  bool firstFrame = false;   ///< the option is new to the object this frame
+};
+
 /// A method's measured passes of no object this frame (its screen-space passes), ms.
 struct PassSample {
   std::string method;  ///< "separable", ...
@@ -172,17 +164,26 @@ class QualityController {
   void observe(std::span<const CostSample> samples, std::span<const PassSample> passes, double frameMs);
   /// The same without pass samples: every measured ms is some object's.
   void observe(std::span<const CostSample> samples, double frameMs) { observe(samples, {}, frameMs); }
+  /// The measured costs of a frame drawn without a plan: the host or the trainee chose each
+  /// object's option (no budget set). Each sample teaches its option's cost, its cost class and
+  /// the ratios that calibrate the unmeasured options; `passes` the methods' passes; the rest of
+  /// `frameMs` the overhead. A plan made once a budget is set then starts from this machine's
+  /// costs instead of the table's. A frame with any object's option new to it (`firstFrame`)
+  /// teaches nothing: its one-off work is not a steady cost.
+  void observeUnplanned(std::span<const OptionCostSample> samples, std::span<const PassSample> passes,
+                        double frameMs);
 
   const std::vector<ObjectChoice>& choices() const { return m_choices; }
   const Plan& plan() const { return m_plan; }
   const QualityTable& table() const { return m_table; }
   std::span<const CostModel> costs() const { return m_costs; }
   /// The costs plans are made with: the learned ones, and for an option never measured its
-  /// table prior times the measured-over-prior ratio of its method's measured options (of all
-  /// measured options while its method has none), times ControllerSettings::unmeasuredCostFactor.
-  /// The table's costs come from another machine
-  /// and scene; a setting's cost is mostly its method's passes, so one measured setting
-  /// calibrates its siblings before each of them is tried at the price of a frame over budget.
+  /// table prior calibrated by the measured-over-prior ratios of its method's measured options
+  /// (CostTermRatios: one for the fixed part, one for the per-pixel part; the ratios over all
+  /// measured options where the method's samples leave a term open), times
+  /// ControllerSettings::unmeasuredCostFactor. The table's costs come from another machine and
+  /// scene; a setting's cost is mostly its method's passes, so one measured setting calibrates
+  /// its siblings before each of them is tried at the price of a frame over budget.
   std::vector<CostModel> planningCosts() const;
   /// Per table option, ms: its method's learned passes of no object (choosePlan's passMs; 0
   /// until measured).
@@ -203,6 +204,12 @@ class QualityController {
   const ControllerSettings& settings() const { return m_settings; }
 
  private:
+  /// One steady sample of `option` on `px` pixels: its cost model, its cost class, the ratios.
+  void learnObject(int option, double px, double ms);
+  /// The methods' passes of no object; returns their sum, ms. `learn[m]`: method m's are steady.
+  double learnPasses(std::span<const PassSample> passes, const std::vector<bool>& learn);
+  /// The frame's ms beyond its objects and passes: the overhead's EMA.
+  void learnOverhead(double ms);
   QualityTable m_table;
   ControllerSettings m_settings;
   std::vector<CostModel> m_costs;
@@ -210,7 +217,7 @@ class QualityController {
   Plan m_plan;
   std::vector<ObjectView> m_lastObjects;
   std::vector<ObjectChoice> m_choices;
-  double m_budgetMs = 0.0;  ///< ms, of the last update
+  double m_budgetMs = 0.0;  ///< ms, the budget the held plan was made for (update)
   int m_age = 0;
   int m_changes = 0;
   int m_deferred = 0;
@@ -219,13 +226,12 @@ class QualityController {
   int m_frameSamples = 0, m_meanSamples = 0;
   int m_updates = 0;
   std::vector<double> m_switchMs;  ///< per option, ms (switchCostsMs)
-  /// Measured over prior cost, EMA per method name (index in m_methods) and over all: {sum, n}.
   std::vector<std::string> m_methods;
   std::vector<std::size_t> m_optionMethod;  ///< per option, its method's index in m_methods
-  std::vector<double> m_methodRatio;
-  std::vector<int> m_methodRatioSamples;
-  double m_allRatio = 1.0;
-  int m_allRatioSamples = 0;
+  /// Measured over prior cost per cost term (planningCosts), per method (index in m_methods) and
+  /// over all.
+  std::vector<CostTermRatios> m_methodRatios;
+  CostTermRatios m_allRatios;
   std::vector<int> m_switchSamples;
   std::vector<double> m_passMs;  ///< per method (index in m_methods), ms: its passes of no object
   std::vector<int> m_passSamples;

@@ -82,5 +82,8 @@ Result<QualityTable> loadQualityTable(const std::filesystem::path& atlasJson,
 /// The committed default, data/quality/default_atlas.json (embedded at build time; its
 /// README says which command produced it).
 const QualityTable& defaultQualityTable();
+/// The table of `atlasJson`, or the default where it is empty; an error where it does not load
+/// or has no options (SceneSettings::qualityTable, the budget bench's --quality-table).
+Result<QualityTable> qualityTableOrDefault(const std::filesystem::path& atlasJson);
 
 }  // namespace tissue::quality

@@ -136,7 +136,11 @@ class Scene {
   Result<void> setMethod(OrganId organ, render::ShadingMethod method);
   /// Sets an organ's method and setting to a quality table option (quality/quality_table.h, the
   /// atlas's names; "lit wrap" the fallback), as the controller would; the budget, when on,
-  /// replaces it at the next render.
+  /// replaces it at the next render. While no budget is set and every organ is drawn with a table
+  /// option, each frame teaches the controller (made here, from SceneSettings::qualityTable)
+  /// what those options cost on this machine, so that a budget set later plans from measured
+  /// costs (quality::QualityController::observeUnplanned). Errors: the option's method is not
+  /// offered by the organ's material, or the quality table does not load.
   Result<void> setMethodOption(OrganId organ, const quality::QualityOption& option);
   /// A static organ's shape as the host deforms it (its own simulator, a recorded state): one
   /// position per geometric vertex of its mesh (mm, object space); normals, planes and tangents
