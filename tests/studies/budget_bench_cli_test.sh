@@ -54,6 +54,10 @@ for run, r in zip(bench["controller"], results):
     assert ms[math.ceil(0.5 * len(ms)) - 1] == r["frame_ms_median"], (ms, r)
     assert all(0 <= f < len(ms) for f in run["plan_change_frames"]), run
     assert len(run["plan_change_frames"]) <= run["plan_changes"], run
+    assert run["switches_deferred"] >= 0, run
+    # The plan is made for the budget less the tail's share, never for more than the budget.
+    assert 0 < run["planned_for_ms"] <= r["budget_ms"] + 1e-9, (run, r)
+    assert run["predicted_ms"] > 0, run
 for f in bench["fixed"]:
     assert f["first_frame_ms"] > 0, f
 # The best fixed setting that fits has its p95 within the budget itself; the one reported beside

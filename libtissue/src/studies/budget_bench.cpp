@@ -101,6 +101,7 @@ struct Bench {
     const int total = config.warmupFrames + config.timedFrames;
     int slow = 0;
     const int changesBefore = scene.qualityController() ? scene.qualityController()->plansChanged() : 0;
+    const int deferredBefore = scene.qualityController() ? scene.qualityController()->switchesDeferred() : 0;
     for (int f = 0; f < total; ++f) {
       // Forth and back through the recorded poke, ending on its deepest frame.
       const std::size_t n = shapes.size();
@@ -143,7 +144,12 @@ struct Bench {
     r.interiorRelRms = scoreAgainstTruth(truthLinear, *linear, interiorMask).relRms;
     lastImage = std::move(*linear);
     r.choices = scene.budgetChoices();
-    if (scene.qualityController()) r.planChanges = scene.qualityController()->plansChanged() - changesBefore;
+    if (scene.qualityController()) {
+      r.planChanges = scene.qualityController()->plansChanged() - changesBefore;
+      r.switchesDeferred = scene.qualityController()->switchesDeferred() - deferredBefore;
+      r.plannedForMs = scene.qualityController()->planningBudgetMs(scene.budgetMs());
+      r.predictedMs = scene.qualityController()->plan().predictedMs;
+    }
     return r;
   }
 };
@@ -193,6 +199,9 @@ std::string jsonOf(const BudgetBenchResult& b, const BudgetBenchConfig& config) 
     }
     runs.push_back({{"budget_ms", c.budgetMs},
                     {"plan_changes", c.planChanges},
+                    {"switches_deferred", c.switchesDeferred},
+                    {"planned_for_ms", c.plannedForMs},
+                    {"predicted_ms", c.predictedMs},
                     {"frame_ms", c.frameMs},
                     {"plan_change_frames", c.planChangeFrames},
                     {"rel_rms_off_silhouettes", c.interiorRelRms},

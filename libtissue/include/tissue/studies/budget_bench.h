@@ -57,7 +57,10 @@ struct BudgetRun {
   double relRms = 0.0, relRmsDebiased = 0.0;     ///< the last frame against the truth
   std::vector<scene::BudgetChoice> choices;      ///< the controller's, at the last frame
   int planChanges = 0;                           ///< the controller's plans during the run
-  std::vector<double> frameMs;                   ///< each timed frame, ms
+  int switchesDeferred = 0;     ///< gains the controller left because their switch frame would not fit
+  double plannedForMs = 0.0;    ///< ms, the budget the last plan was made for (the tail's share off)
+  double predictedMs = 0.0;     ///< ms, the last plan's predicted frame
+  std::vector<double> frameMs;  ///< each timed frame, ms
   double firstFrameMs = 0.0;  ///< the run's first frame, ms: the setting's first use (set-up, shader builds)
   std::vector<int> planChangeFrames;     ///< timed frames (index into frameMs) the plan changed in
   std::vector<double> organRelRms;       ///< per organ (placements' order): rel RMS over its pixels
