@@ -85,14 +85,21 @@ void main() {
   vec3 irradianceIn = vec3(0.0), specular = vec3(0.0);
   for (int l = 0; l < MAX_LIGHTS; ++l) {
     weight[l] = 1.0;
-    if (l >= u_lightCount || !boundary) continue;
+    if (l >= u_lightCount) continue;
+    // Cast shadows at the surface point, as every other method's (common/lights.glsl): the light
+    // the march collects enters within a few mean free paths of it, far less than a shadow map
+    // texel. Before, the march drew none, though the truth and every other method do
+    // (docs/DECISIONS.md, "The ray march draws cast shadows").
+    float shadow = shadowFactor(l, v_worldPosition, N);
+    weight[l] = shadow;
+    if (!boundary) continue;
     vec3 L = lightDirection(l, f.P);
     float NdotL = max(dot(N, L), 0.0);
     float Tl = T0 * boundaryWeight(NdotL, F0);
-    weight[l] = Tl * NdotL / max(insideCosine(NdotL), 1e-4);  // the beam narrowed by refraction
-    irradianceIn += Tl / T0 * NdotL * u_lightRadiance[l];
+    weight[l] = shadow * Tl * NdotL / max(insideCosine(NdotL), 1e-4);  // the beam narrowed by refraction
+    irradianceIn += shadow * Tl / T0 * NdotL * u_lightRadiance[l];
     // The outer surface's microfacet reflection, every method's (common/specular.glsl).
-    if (u_specularOn) specular += surfaceSpecular(N, L, V, F0, u_shininess) * u_lightRadiance[l];
+    if (u_specularOn) specular += shadow * surfaceSpecular(N, L, V, F0, u_shininess) * u_lightRadiance[l];
   }
   vec4 result = marchSingleScattering(f, max(n, 1), jitter, weight);
 #ifdef TISSUE_SHOW_SAMPLES

@@ -3,13 +3,15 @@
 // the rendered radiance equals the optics' reflectance (optics::semiInfiniteReflectance: the
 // dipole's multiple scattering plus the march's single scattering), energy stays below the
 // light that enters for white light, and the Fresnel-weighted specular adds on top; at oblique
-// view and light the single scattering alone equals the truth's closed form (refracted paths).
+// view and light the single scattering alone equals the truth's closed form (refracted paths);
+// a cast shadow darkens it.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "gl_test_support.h"
 #include "test_scene.h"
+#include "tissue/core/vec_math.h"
 #include "tissue/optics/reflectance.h"
 #include "tissue/optics/schlick_phase.h"
 #include "tissue/render/renderer.h"
@@ -218,6 +220,42 @@ TEST_P(RayMarchMaterialTest, AtObliqueViewAndLightTheSingleScatteringIsTheTruths
     // 2 %: the RGBA16F target, the march's midpoint rule (sigma_t dt <= 0.06), the pixel's view.
     EXPECT_NEAR(double(g[c]), want[std::size_t(c)], 0.02 * want[std::size_t(c)]) << "band " << c;
   }
+}
+
+// A sphere between the light and the patch casts its shadow on the march as on every other
+// method (common/lights.glsl shadowFactor at the surface point): the single and the multiple
+// scattering of the shadowed pixel go with the light; away from the shadow nothing changes.
+TEST_P(RayMarchMaterialTest, ACastShadowDarkensTheMarch) {
+  TISSUE_CONTEXT_OR_FAIL(context, GetParam());
+  auto p = makeFlatPatch(*context);
+  ASSERT_TRUE(p) << p.error().message;
+  SphereMesh sphere = makeSphere(8.0f, 12, 24);
+  for (auto& v : sphere.positions)
+    v = v + Float3{-22.5f, 0.0f, 30.0f};  // its shadow falls on the centre: 30 mm x 0.6 / 0.8 to the right
+  auto occluder = p->renderer.createMesh(sphere.arrays());
+  ASSERT_TRUE(occluder) << occluder.error().message;
+  render::SceneObject patch;
+  patch.mesh = p->mesh;
+  patch.method = homogeneous(dataLiver(), 0, p->map);
+  render::SceneObject ball;
+  ball.mesh = *occluder;
+  p->scene.objects = {patch, ball};
+  p->scene.lights[0].direction = {0.6f, 0.0f, -0.8f};
+  const auto pixel = [&](int x, int y) {
+    auto frame = p->renderer.readFrame(render::FrameView::Radiance);
+    EXPECT_TRUE(frame) << frame.error().message;
+    return frame ? frame->pixels[std::size_t(y) * kSize + std::size_t(x)].x : 0.0f;
+  };
+  ASSERT_TRUE(p->renderer.renderImage(p->scene, kSize, kSize));
+  const float litCentre = pixel(kSize / 2, kSize / 2), litAside = pixel(kSize / 2, kSize / 2 + 16);
+  p->scene.lights[0].castsShadows = true;
+  ASSERT_TRUE(p->renderer.renderImage(p->scene, kSize, kSize));
+  const float shadowedCentre = pixel(kSize / 2, kSize / 2), shadowedAside = pixel(kSize / 2, kSize / 2 + 16);
+  std::printf("[ shadow ] centre %.5f -> %.5f, aside %.5f -> %.5f\n", double(litCentre),
+              double(shadowedCentre), double(litAside), double(shadowedAside));
+  EXPECT_GT(litCentre, 0.05f);
+  EXPECT_LT(shadowedCentre, 0.05f * litCentre);  // no ambient: the umbra is black
+  EXPECT_NEAR(shadowedAside, litAside, 0.01f * litAside);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, RayMarchMaterialTest, ::testing::Values(Backend::Egl, Backend::OsMesa),
