@@ -45,10 +45,9 @@ double weightOf(const ObjectView& v) {
   return std::max(0.0, v.importance) * std::max(0.0, v.footprintPx);
 }
 
-// One sample x into the mean v of n samples so far: a running mean until 1 / rate samples, then an
-// EMA of weight `rate` (started without bias). Every learned figure of the controller uses it.
+// One sample x into the mean v of n samples so far (sampleWeight).
 void runningEma(double& v, int& n, double x, double rate) {
-  const double a = std::clamp(std::max(rate, 1.0 / double(n + 1)), 0.0, 1.0);
+  const double a = sampleWeight(n, rate);
   v = (1 - a) * v + a * x;
   ++n;
 }

@@ -5,15 +5,9 @@
 #include <cmath>
 
 namespace tissue::quality {
-namespace {
-
-// The weight of the newest sample: a running mean until 1 / rate samples, then an EMA of weight
-// `rate` (started without bias).
 double sampleWeight(int samples, double learningRate) {
   return std::clamp(std::max(learningRate, 1.0 / double(samples + 1)), 0.0, 1.0);
 }
-
-}  // namespace
 
 CostModel costModelOf(const QualityOption& option) {
   CostModel m;

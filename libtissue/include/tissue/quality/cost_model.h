@@ -10,6 +10,11 @@
 
 namespace tissue::quality {
 
+/// The weight of the newest of `samples` + 1 samples in every learned figure of the controller: a
+/// running mean until 1 / learningRate samples, then an EMA of weight `learningRate` (started
+/// without bias).
+double sampleWeight(int samples, double learningRate);
+
 /// A learned cost: ms = fixedMs + msPerPx * px, with the EMA'd normal equations behind it.
 struct CostModel {
   double fixedMs = 0.0;  ///< ms
