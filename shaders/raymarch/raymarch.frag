@@ -8,9 +8,16 @@
 // "scatters directly towards the viewer" (a specular term) or "into the material":
 //   L = f_r (N.L) E                                                 outer surface (common/specular.glsl)
 //     + T(N.V) [ L_ss(T(N.L) (N.L) / mu'_L per light) / n^2         single scattering (eq. 1-5)
-//              + sum_l R_ms T(N.L)/T0 (N.L) E_l/pi / T0 ]           multiple scattering
+//              + sum_l R_ms (N.L) E_l/pi / T0 ]                    multiple scattering
 // with T(mu) = 1 - F(mu) the dielectric's transmittance and T0 = T(1): the dipole's R_ms is per
-// incident light at normal incidence, which the two T/T0 ratios carry to other angles. The single
+// incident light at normal incidence; T(N.V)/T0 carries its exit to other view angles. Its entry
+// keeps R_ms at every light angle: at oblique incidence the boundary passes less light
+// (T(N.L)/T0), but that light starts shallower and more of it returns (Chandrasekhar's H-function:
+// a half-space of albedo near 1 reflects more at oblique incidence), and for tissue's albedos the
+// two nearly cancel. With T(N.L)/T0 the march was 10 % dark where the light met the surface
+// obliquely; without it its error fell on every atlas frame and on the budget bench
+// (docs/DECISIONS.md, "The ray march's multiple scattering enters without the Fresnel weight"),
+// as the painted methods' had (common/specular.glsl boundaryWeight). The single
 // scattering is marched along the refracted view path and lit along the refracted light paths
 // (march.glsl, insideDirection), as the truth's closed form (truth::layeredSlabSingleScattering,
 // Hanrahan and Krueger 1993 §4): each beam narrows by (N.L) / mu'_L entering, mu' the refracted
@@ -97,7 +104,7 @@ void main() {
     float NdotL = max(dot(N, L), 0.0);
     float Tl = T0 * boundaryWeight(NdotL, F0);
     weight[l] = shadow * Tl * NdotL / max(insideCosine(NdotL), 1e-4);  // the beam narrowed by refraction
-    irradianceIn += shadow * Tl / T0 * NdotL * u_lightRadiance[l];
+    irradianceIn += shadow * NdotL * u_lightRadiance[l];  // no T(N.L)/T0: see the header
     // The outer surface's microfacet reflection, every method's (common/specular.glsl).
     if (u_specularOn) specular += shadow * surfaceSpecular(N, L, V, F0, u_shininess) * u_lightRadiance[l];
   }

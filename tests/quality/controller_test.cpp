@@ -17,7 +17,7 @@ QualityOption option(std::string method, std::string setting, double err, double
   QualityOption o;
   o.method = std::move(method);
   o.setting = std::move(setting);
-  o.relRms = {err, err * 1.1, err * 1.3, err * 1.2};
+  o.relRms = {err, err * 1.1, err * 1.3, err * 1.2, err * 1.1};
   o.fixedMs = fixedMs;
   o.msPerPx = msPerPx;
   return o;
@@ -703,6 +703,85 @@ TEST(QualityController, ViewClassFromFootprintAngleAndDeformation) {
   EXPECT_EQ(viewClassOf(v, kScreenPx), ViewClass::Deforming);
   v.viewAngleDeg = 85;
   EXPECT_EQ(viewClassOf(v, kScreenPx), ViewClass::Grazing);
+  v.deforming = false;
+  v.viewAngleDeg = 50;
+  EXPECT_EQ(viewClassOf(v, kScreenPx), ViewClass::Oblique);
+  v.viewAngleDeg = 20;
+  EXPECT_EQ(viewClassOf(v, kScreenPx), ViewClass::Rest);
+}
+
+// Two options whose errors cross along the view angle, as the atlas's ray march and separable do
+// at grazing view: A leads at the rest frame's 25 degrees, B at the grazing frame's 80.
+QualityTable angleTable() {
+  QualityTable t;
+  QualityOption a = option("ray-march", "50", 0.0, 1.0, 1e-4),
+                b = option("separable", "guided-25", 0.0, 1.0, 1e-4);
+  const auto set = [](QualityOption& o, ViewClass c, double e) { o.relRms[std::size_t(c)] = e; };
+  set(a, ViewClass::Rest, 0.10), set(a, ViewClass::Oblique, 0.20), set(a, ViewClass::Grazing, 0.30);
+  set(a, ViewClass::CloseUp, 0.15), set(a, ViewClass::Deforming, 0.12);
+  set(b, ViewClass::Rest, 0.20), set(b, ViewClass::Oblique, 0.20), set(b, ViewClass::Grazing, 0.20);
+  set(b, ViewClass::CloseUp, 0.18), set(b, ViewClass::Deforming, 0.22);
+  t.options = {a, b};
+  t.viewAngleDeg[std::size_t(ViewClass::Rest)] = 25;
+  t.viewAngleDeg[std::size_t(ViewClass::Deforming)] = 25;
+  t.viewAngleDeg[std::size_t(ViewClass::CloseUp)] = 25;
+  t.viewAngleDeg[std::size_t(ViewClass::Oblique)] = 45;
+  t.viewAngleDeg[std::size_t(ViewClass::Grazing)] = 80;
+  return t;
+}
+
+TEST(QualityController, TheExpectedErrorFollowsTheViewAngleBetweenTheAtlasFrames) {
+  const QualityTable t = angleTable();
+  ControllerSettings s;
+  s.errorConfidence = 0.0;
+  ObjectView v;
+  const auto e = [&](double angle, ViewClass c) {
+    v.viewAngleDeg = angle;
+    return expectedSquaredError(t, 0, v, c, s);
+  };
+  // On the frames' own angles, the frames' errors; between them, linear in the angle.
+  EXPECT_NEAR(e(25, ViewClass::Rest), 0.01, 1e-12);
+  EXPECT_NEAR(e(45, ViewClass::Oblique), 0.04, 1e-12);
+  EXPECT_NEAR(e(80, ViewClass::Grazing), 0.09, 1e-12);
+  EXPECT_NEAR(e(35, ViewClass::Rest), 0.025, 1e-12);
+  EXPECT_NEAR(e(35, ViewClass::Oblique), 0.025, 1e-12);  // the class names the frame; the angle rules
+  EXPECT_NEAR(e(62.5, ViewClass::Oblique), 0.065, 1e-12);
+  // Constant beyond the ends.
+  EXPECT_NEAR(e(0, ViewClass::Rest), 0.01, 1e-12);
+  EXPECT_NEAR(e(89, ViewClass::Grazing), 0.09, 1e-12);
+  // A close-up (or a deforming organ) pays the angle's change from its frame's angle on top of its
+  // own frame's error: the close-up at 45 degrees, 0.0225 + (0.04 - 0.01).
+  EXPECT_NEAR(e(45, ViewClass::CloseUp), 0.0525, 1e-12);
+  EXPECT_NEAR(e(25, ViewClass::CloseUp), 0.0225, 1e-12);
+  // Never below zero: B's close-up error falls with the angle less than its rest error rises.
+  QualityTable falling = t;
+  falling.options[1].relRms[std::size_t(ViewClass::Grazing)] = 0.0;
+  v.viewAngleDeg = 80;
+  EXPECT_NEAR(expectedSquaredError(falling, 1, v, ViewClass::CloseUp, s), 0.0, 1e-12);  // 0.0324 - 0.04
+  // Without the frames' angles (an older atlas), the class's own error at any angle.
+  QualityTable old = t;
+  old.viewAngleDeg.fill(kNoAngle);
+  v.viewAngleDeg = 60;
+  EXPECT_NEAR(expectedSquaredError(old, 0, v, ViewClass::CloseUp, s), 0.0225, 1e-12);
+  // The confidence charge moves with the angle as the error does.
+  QualityTable charged = t;
+  charged.options[0].squaredStderr[std::size_t(ViewClass::Oblique)] = 0.002;
+  s.errorConfidence = 1.0;
+  v.viewAngleDeg = 45;
+  EXPECT_NEAR(expectedSquaredError(charged, 0, v, ViewClass::Oblique, s), 0.042, 1e-12);
+}
+
+TEST(QualityController, AnOrganSeenObliquelyTakesTheOptionThatLeadsAtItsAngle) {
+  const QualityTable t = angleTable();
+  const std::vector<CostModel> costs = priors(t);
+  std::vector<ObjectView> views(1);
+  views[0].footprintPx = 0.5 * kScreenPx;  // a close-up
+  ControllerSettings s;
+  s.errorConfidence = 0.0;
+  views[0].viewAngleDeg = 25;  // as the atlas's close-up: A (0.0225 against 0.0324)
+  EXPECT_EQ(choosePlan(t, costs, 0.0, views, kScreenPx, 1e3, s).option, std::vector<int>{0});
+  views[0].viewAngleDeg = 50;  // A 0.0225 + 0.0471 - 0.01 = 0.0596, B 0.0324 + 0
+  EXPECT_EQ(choosePlan(t, costs, 0.0, views, kScreenPx, 1e3, s).option, std::vector<int>{1});
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <string>
 
@@ -68,6 +69,35 @@ TEST(QualityTable, ReadsErrorsPerViewClassAndCostPriors) {
   const int wrap = table->find("lit", kWrapSetting);
   ASSERT_GE(wrap, 0);
   EXPECT_EQ(table->options[std::size_t(wrap)].relRms, l.relRms);
+}
+
+TEST(QualityTable, ReadsEachFramesViewAngleAndFillsTheObliqueFrameBetweenRestAndGrazing) {
+  // An atlas with the frames' angles (truth.frames[].view_angle_deg), and without an oblique frame.
+  const char* atlas = R"({
+    "truth": {"frames": [{"frame": "rest", "organ_pixels": 1000, "view_angle_deg": 24.7},
+                         {"frame": "grazing", "organ_pixels": 600, "view_angle_deg": 79.8},
+                         {"frame": "backlit", "organ_pixels": 2000, "view_angle_deg": 24.2}]},
+    "results": [
+      {"method": "lit", "setting": "default", "frame": "rest", "ms": 3.0, "rel_rms": 0.2,
+       "squared_vs_best_stderr": 0.001},
+      {"method": "lit", "setting": "default", "frame": "grazing", "ms": 2.6, "rel_rms": 0.4,
+       "squared_vs_best_stderr": 0.003}]})";
+  auto table = qualityTableFromAtlasJson(atlas);
+  ASSERT_TRUE(table) << table.error().message;
+  EXPECT_DOUBLE_EQ(table->viewAngleDeg[std::size_t(ViewClass::Rest)], 24.7);
+  EXPECT_DOUBLE_EQ(table->viewAngleDeg[std::size_t(ViewClass::Grazing)], 79.8);
+  EXPECT_TRUE(std::isnan(table->viewAngleDeg[std::size_t(ViewClass::Oblique)]));  // no such frame
+  EXPECT_TRUE(std::isnan(table->viewAngleDeg[std::size_t(ViewClass::CloseUp)]));  // no such frame
+  const QualityOption& l = table->options[std::size_t(table->find("lit", "default"))];
+  EXPECT_NEAR(l.relRms[std::size_t(ViewClass::Oblique)], 0.3, 1e-12);
+  EXPECT_NEAR(l.squaredStderr[std::size_t(ViewClass::Oblique)], 0.002, 1e-12);
+  // The other missing classes keep the mean of the frames there are.
+  EXPECT_NEAR(l.relRms[std::size_t(ViewClass::CloseUp)], 0.3, 1e-12);
+  // An atlas without angles: none known.
+  auto plain = qualityTableFromAtlasJson(kAtlas);
+  ASSERT_TRUE(plain);
+  for (double a : plain->viewAngleDeg)
+    EXPECT_TRUE(std::isnan(a));
 }
 
 TEST(QualityTable, ReadsTheAtlasRowOfTheWrapTermAsItsOwn) {
@@ -168,6 +198,14 @@ TEST(QualityTable, CommittedDefaultHasEveryMethodAndPositiveCosts) {
   EXPECT_GT(dearestMs, litMs);              // the atlas's costs differ: some method costs more than lit
   for (const QualityOption& o : t.options)  // and none less (NoOptionIsPricedBelowPlainLit)
     EXPECT_GE(o.fixedMs + o.msPerPx * 2000.0, litMs) << o.method << " " << o.setting;
+  // The angle frames: rest, oblique and grazing in that order of view angle (the controller's
+  // error follows the angle between them).
+  const double rest = t.viewAngleDeg[std::size_t(ViewClass::Rest)];
+  const double oblique = t.viewAngleDeg[std::size_t(ViewClass::Oblique)];
+  const double grazing = t.viewAngleDeg[std::size_t(ViewClass::Grazing)];
+  EXPECT_LT(rest, oblique);
+  EXPECT_LT(oblique, grazing);
+  EXPECT_GT(grazing, 70.0);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "tissue/quality/controller.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -52,14 +53,6 @@ void runningEma(double& v, int& n, double x, double rate) {
   ++n;
 }
 
-// The squared error a plan is charged for `option` on a `view`: the table's, plus
-// errorConfidence of the standard errors with which the atlas's truth resolved it (a pessimistic
-// bound: an option whose lead the truth could not resolve does not win on its noise).
-double chargedSquaredError(const QualityOption& option, ViewClass view, const ControllerSettings& s) {
-  const double e = option.relRms[std::size_t(view)];
-  return e * e + std::max(0.0, s.errorConfidence) * option.squaredStderr[std::size_t(view)];
-}
-
 double costOf(std::span<const CostModel> costs, int option, const ObjectView& v) {
   return std::max(0.0, costs[std::size_t(option)].predictMs(std::max(0.0, v.footprintPx)));
 }
@@ -91,7 +84,7 @@ std::vector<int> leastErrorWithin(const QualityTable& table, std::span<const Cos
     std::fill(next.begin(), next.end(), kInf);
     for (int o : cand[i]) {
       const long u = long(std::ceil(costOf(costs, o, objects[i]) / grid - 1e-9));
-      const double term = w * chargedSquaredError(table.options[std::size_t(o)], view, s);
+      const double term = w * expectedSquaredError(table, o, objects[i], view, s);
       for (long k = u; k < long(cols); ++k) {
         const double v = prev[std::size_t(k - u)] + term;
         // Ties go to the cheaper option (fewer units used), for a steady choice.
@@ -131,7 +124,55 @@ ViewClass viewClassOf(const ObjectView& v, double screenPx, const ControllerSett
     return ViewClass::CloseUp;
   if (v.viewAngleDeg >= s.grazingDeg) return ViewClass::Grazing;
   if (v.deforming) return ViewClass::Deforming;
+  if (v.viewAngleDeg >= s.obliqueDeg) return ViewClass::Oblique;
   return ViewClass::Rest;
+}
+
+namespace {
+
+// The table's charged squared error of `option` on the frame of class v.
+double chargedOnFrame(const QualityOption& option, std::size_t v, const ControllerSettings& s) {
+  const double e = option.relRms[v];
+  return e * e + std::max(0.0, s.errorConfidence) * option.squaredStderr[v];
+}
+
+// The option's charged squared error along the view angle: piecewise linear between the atlas's
+// frames of one distance that differ in angle (rest, oblique, grazing), constant beyond the ends;
+// none (nan) where the table has fewer than two of them with an angle.
+double alongAngle(const QualityTable& table, const QualityOption& option, double angleDeg,
+                  const ControllerSettings& s) {
+  std::array<std::pair<double, double>, 3> curve{};  // (angle, charged e^2); no allocation per call
+  std::size_t n = 0;
+  for (ViewClass c : {ViewClass::Rest, ViewClass::Oblique, ViewClass::Grazing})
+    if (const double a = table.viewAngleDeg[std::size_t(c)]; std::isfinite(a))
+      curve[n++] = {a, chargedOnFrame(option, std::size_t(c), s)};
+  if (n < 2) return std::nan("");
+  for (std::size_t i = 1; i < n; ++i)  // by angle (insertion: three at most)
+    for (std::size_t j = i; j > 0 && curve[j].first < curve[j - 1].first; --j)
+      std::swap(curve[j], curve[j - 1]);
+  if (angleDeg <= curve[0].first) return curve[0].second;
+  for (std::size_t k = 1; k < n; ++k)
+    if (angleDeg <= curve[k].first) {
+      const auto& [a0, e0] = curve[k - 1];
+      const auto& [a1, e1] = curve[k];
+      const double t = a1 > a0 ? (angleDeg - a0) / (a1 - a0) : 1.0;
+      return e0 + t * (e1 - e0);
+    }
+  return curve[n - 1].second;
+}
+
+}  // namespace
+
+double expectedSquaredError(const QualityTable& table, int option, const ObjectView& view, ViewClass cls,
+                            const ControllerSettings& s) {
+  const QualityOption& o = table.options[std::size_t(option)];
+  const double own = chargedOnFrame(o, std::size_t(cls), s);
+  const double frameAngle = table.viewAngleDeg[std::size_t(cls)];
+  if (!std::isfinite(frameAngle)) return own;
+  const double here = alongAngle(table, o, view.viewAngleDeg, s);
+  const double there = alongAngle(table, o, frameAngle, s);
+  if (!std::isfinite(here) || !std::isfinite(there)) return own;
+  return std::max(0.0, own + (here - there));
 }
 
 namespace {
@@ -178,7 +219,7 @@ std::vector<int> frontOf(const QualityTable& table, std::span<const CostModel> c
   std::vector<int> out;
   double least = kInf;
   for (const auto& [cost, o] : byCost) {
-    const double e = chargedSquaredError(table.options[std::size_t(o)], cls, s);
+    const double e = expectedSquaredError(table, o, view, cls, s);
     if (e < least - 1e-15) {
       out.push_back(o);
       least = e;
@@ -200,7 +241,7 @@ Plan evaluatePlan(const QualityTable& table, std::span<const CostModel> costs, d
     const int o = p.option[i];
     p.predictedMs += costOf(costs, o, objects[i]);
     we += weightOf(objects[i]) *
-          chargedSquaredError(table.options[std::size_t(o)], viewClassOf(objects[i], screenPx, s), s);
+          expectedSquaredError(table, o, objects[i], viewClassOf(objects[i], screenPx, s), s);
     w += weightOf(objects[i]);
   }
   p.expectedError = w > 0.0 ? std::sqrt(we / w) : 0.0;
@@ -432,7 +473,9 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
     c.setting = opt.setting;
     c.predictedMs = costOf(costs, o, objects[i]);
     c.view = viewClassOf(objects[i], screenPx, s);
-    c.expectedRelRms = opt.relRms[std::size_t(c.view)];
+    ControllerSettings uncharged = s;
+    uncharged.errorConfidence = 0.0;
+    c.expectedRelRms = std::sqrt(expectedSquaredError(m_table, o, objects[i], c.view, uncharged));
     c.fallback = objects[i].footprintPx < s.minFootprintPx;
     c.mesh = meshWorkOf(opt.method, objects[i].hasNormalMap);
     c.switched = before.size() == objects.size() && before[i] != o;

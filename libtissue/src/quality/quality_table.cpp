@@ -45,6 +45,8 @@ std::string_view viewClassFrame(ViewClass view) {
       return "close-up";
     case ViewClass::Grazing:
       return "grazing";
+    case ViewClass::Oblique:
+      return "oblique";
   }
   return "rest";
 }
@@ -88,11 +90,16 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
   if (json.is_discarded()) return Error{"quality table: the atlas JSON does not parse"};
   if (!json.contains("results") || !json["results"].is_array())
     return Error{"quality table: the atlas JSON has no 'results' list (tissue-sim atlas --json)"};
-  std::map<std::string, double> pixelsOf;  // per frame: organ pixels
+  std::map<std::string, double> pixelsOf;                                    // per frame: organ pixels
+  std::array<double, kViewClassCount> angles = QualityTable{}.viewAngleDeg;  // none known
   if (json.contains("truth") && json["truth"].contains("frames"))
-    for (const auto& f : json["truth"]["frames"])
+    for (const auto& f : json["truth"]["frames"]) {
       if (f.contains("frame") && f.contains("organ_pixels"))
         pixelsOf[f["frame"].get<std::string>()] = f["organ_pixels"].get<double>();
+      if (f.contains("frame") && f.contains("view_angle_deg") && f["view_angle_deg"].is_number())
+        if (const auto v = viewClassOfFrame(f["frame"].get<std::string>()))
+          angles[std::size_t(*v)] = f["view_angle_deg"].get<double>();
+    }
   struct Acc {
     std::array<double, kViewClassCount> err{}, squaredStderr{};
     std::array<bool, kViewClassCount> has{};
@@ -171,6 +178,13 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
       o.relRms[v] = a.has[v] ? a.err[v] : sum / n;
       o.squaredStderr[v] = a.has[v] ? a.squaredStderr[v] : sumStderr / n;
     }
+    // An atlas without the oblique frame: the angle between rest and grazing.
+    const auto rest = std::size_t(ViewClass::Rest), grazing = std::size_t(ViewClass::Grazing),
+               oblique = std::size_t(ViewClass::Oblique);
+    if (!a.has[oblique] && a.has[rest] && a.has[grazing]) {
+      o.relRms[oblique] = 0.5 * (a.err[rest] + a.err[grazing]);
+      o.squaredStderr[oblique] = 0.5 * (a.squaredStderr[rest] + a.squaredStderr[grazing]);
+    }
     o.fixedMs = std::max(0.0, lines[id].first - table.frameOverheadMs);
     o.msPerPx = lines[id].second;
     const std::string key = costClassKey(o.method, o.setting);
@@ -181,7 +195,8 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
   }
   if (table.options.empty())
     return Error{
-        "quality table: the atlas JSON has no result on the rest, poked, close-up or grazing frames"};
+        "quality table: the atlas JSON has no result on the rest, poked, close-up, oblique or grazing "
+        "frames"};
   // No option is cheaper than plain lit: every method rasterises and shades the organ's pixels at
   // least once. A noisy fit (the wrap row's slope came out negative, its mean below lit's
   // intercept) would otherwise price an option at 0 ms, and a free option is chosen everywhere.
@@ -200,6 +215,7 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
       table.options.push_back(std::move(wrap));
     }
   }
+  table.viewAngleDeg = angles;
   table.source = "atlas JSON";
   return table;
 }

@@ -113,6 +113,15 @@ Result<std::vector<Frame>> makeFrames(const scene::OrganAssets& organ, const tru
   close.eye = hit - float(centreHit->t / 3.0) * forward;
   close.nearMm = 0.5f;
   frames.push_back({"close-up", close, {keyLight(b)}, false, 3.0});
+  // Oblique: the organ seen at about 45 degrees (a laparoscope looking down into the field), on
+  // the grazing frame's side: with rest (~0) and grazing (~80) it samples the error's dependence on
+  // the view angle, which the quality controller interpolates (quality::expectedSquaredError).
+  // Twice the truth time: its lead differences are the controller's for most organs in view.
+  frames.push_back({"oblique",
+                    render::frameBoundingBox(b.lo, b.hi, aspect, {-1.0f, -0.1f, -1.0f}),
+                    {keyLight(b)},
+                    false,
+                    2.0});
   // Grazing: the organ seen nearly edge-on (its top surface at about 10 degrees).
   frames.push_back({"grazing",
                     render::frameBoundingBox(b.lo, b.hi, aspect, {-1.0f, -0.1f, -0.18f}),
@@ -242,6 +251,9 @@ Result<AtlasResult> runAtlas(render::Renderer& renderer, const AtlasConfig& conf
     };
     AtlasTruth at;
     at.frame = frame.name;
+    // The view angle as the scene's budget sees an organ (its box's thinnest axis against the ray
+    // to its centre), so that the controller's angles and the table's are one measure.
+    at.viewAngleDeg = scene::organView(organ.bounds, kIdentity4, frame.camera, w, h).viewAngleDeg;
     auto material = scene::truthMaterialOf(organ);
     if (!material) return material.error();
     const std::uint64_t key = detail::truthKey(positions, organ.mesh, *material, scene, ts, budget);

@@ -173,7 +173,8 @@ void writeAtlasReport(AtlasResult& result, const AtlasConfig& config,
          {"best_method_rel_rms", bestOf[t.frame]},
          {"noise_over_best", bestOf[t.frame] > 0.0 ? t.noiseRelRms / bestOf[t.frame] : 0.0},
          {"noise_below_a_third_of_best", t.noiseRelRms < bestOf[t.frame] / 3.0},
-         {"organ_pixels", t.organPixels}});
+         {"organ_pixels", t.organPixels},
+         {"view_angle_deg", t.viewAngleDeg}});
   nlohmann::json rows = nlohmann::json::array();
   for (const AtlasRow& r : result.rows)
     rows.push_back({{"method", r.method},

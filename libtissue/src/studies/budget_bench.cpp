@@ -139,8 +139,12 @@ struct Bench {
     r.gain = score.gain;
     r.shapeRelRms = score.shapeRelRms;
     r.relRmsDebiased = debiasedError(score.relRms, truthNoiseRelRms(*truth));
-    for (const auto& mask : organMasks)
-      r.organRelRms.push_back(scoreAgainstTruth(truthLinear, *linear, mask).relRms);
+    for (const auto& mask : organMasks) {
+      const AtlasScore organ = scoreAgainstTruth(truthLinear, *linear, mask);
+      r.organRelRms.push_back(organ.relRms);
+      r.organGain.push_back(organ.gain);
+      r.organShapeRelRms.push_back(organ.shapeRelRms);
+    }
     r.interiorRelRms = scoreAgainstTruth(truthLinear, *linear, interiorMask).relRms;
     lastImage = std::move(*linear);
     r.choices = scene.budgetChoices();
@@ -188,6 +192,8 @@ std::string jsonOf(const BudgetBenchResult& b, const BudgetBenchConfig& config) 
                          {"rel_rms_debiased", f.relRmsDebiased},
                          {"rel_rms_off_silhouettes", f.interiorRelRms},
                          {"organ_rel_rms", f.organRelRms},
+                         {"organ_gain", f.organGain},
+                         {"organ_shape_rel_rms", f.organShapeRelRms},
                          {"too_slow", f.tooSlow}});
   const auto names = placements();
   for (const BudgetRun& c : b.controller) {
@@ -206,6 +212,8 @@ std::string jsonOf(const BudgetBenchResult& b, const BudgetBenchConfig& config) 
                     {"plan_change_frames", c.planChangeFrames},
                     {"rel_rms_off_silhouettes", c.interiorRelRms},
                     {"organ_rel_rms", c.organRelRms},
+                    {"organ_gain", c.organGain},
+                    {"organ_shape_rel_rms", c.organShapeRelRms},
                     {"choices", choices}});
   }
   const nlohmann::json json = {{"width", config.width},

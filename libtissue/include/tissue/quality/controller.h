@@ -42,7 +42,11 @@ struct ControllerSettings {
   double closeUpFraction = 0.25;   ///< of the screen's pixels covered: the close-up class
   double closeUpDistanceMm = 0.0;  ///< mm; nearer than this is close-up too (0: off)
   double grazingDeg = 72.0;        ///< degrees; a view angle above it is the grazing class
-  double headroom = 0.05;          ///< plan to budget x (1 - headroom): measurement noise
+  /// degrees; a view angle above it (below grazingDeg, not deforming) is the oblique class. The
+  /// class names the nearest atlas frame for reports; the error follows the angle itself
+  /// (expectedSquaredError), so this threshold moves no plan.
+  double obliqueDeg = 35.0;
+  double headroom = 0.05;  ///< plan to budget x (1 - headroom): measurement noise
   /// The frame time's tail the budget is for: plans are made for budget / (1 + z cv), cv the
   /// learned relative spread of measured frames about their prediction, so that the frames up to
   /// this normal quantile fit (1.645: the 95th percentile; 0: plan the mean).
@@ -76,6 +80,18 @@ MeshWork meshWorkOf(std::string_view method, bool hasNormalMap);
 
 /// The atlas frame `view` resembles under `settings`, for a screen of `screenPx` pixels.
 ViewClass viewClassOf(const ObjectView& view, double screenPx, const ControllerSettings& settings = {});
+
+/// The squared error a plan is charged for table option `option` on an object of class `cls`
+/// seen as `view`: the table's squared error on the class's atlas frame plus errorConfidence of
+/// its standard errors (a pessimistic bound: an option whose lead the atlas's truth could not
+/// resolve does not win on its noise), moved along the view angle: plus the change of that
+/// charged error from the class frame's angle to the object's, read off the atlas's frames that
+/// differ in angle alone (rest, oblique, grazing; piecewise linear, constant beyond them). A
+/// close-up seen at 50 degrees thus pays what the oblique frame shows 50 degrees costs over the
+/// rest frame's 25. Without the frames' angles in the table (an older atlas), the class's error.
+/// Never below 0. Unitless (squared relative RMS).
+double expectedSquaredError(const QualityTable& table, int option, const ObjectView& view, ViewClass cls,
+                            const ControllerSettings& settings = {});
 
 /// A plan: one option per object.
 struct Plan {
@@ -111,8 +127,8 @@ Plan evaluatePlan(const QualityTable& table, std::span<const CostModel> costs, d
 struct ObjectChoice {
   int option = -1;  ///< table index
   std::string method, setting;
-  double predictedMs = 0.0;  ///< ms
-  double expectedRelRms = 0.0;
+  double predictedMs = 0.0;     ///< ms
+  double expectedRelRms = 0.0;  ///< sqrt(expectedSquaredError) without the confidence charge
   ViewClass view = ViewClass::Rest;
   bool fallback = false;  ///< below the footprint threshold
   MeshWork mesh;

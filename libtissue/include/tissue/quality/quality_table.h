@@ -9,6 +9,7 @@
 
 #include <array>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -20,12 +21,15 @@ namespace tissue::quality {
 
 /// The atlas frame an object's view resembles (studies/atlas.h frames; backlit is not used: the
 /// controller does not know where the lights are).
-enum class ViewClass { Rest, Deforming, CloseUp, Grazing };
-inline constexpr std::size_t kViewClassCount = 4;
-/// The atlas frame's name: "rest", "poked", "close-up", "grazing".
+enum class ViewClass { Rest, Deforming, CloseUp, Grazing, Oblique };
+inline constexpr std::size_t kViewClassCount = 5;
+/// The atlas frame's name: "rest", "poked", "close-up", "grazing", "oblique".
 std::string_view viewClassFrame(ViewClass view);
 /// The view class of an atlas frame's name; none for a frame the controller does not use (backlit).
 std::optional<ViewClass> viewClassOfFrame(std::string_view frame);
+
+/// No view angle known (QualityTable::viewAngleDeg).
+inline constexpr double kNoAngle = std::numeric_limits<double>::quiet_NaN();
 
 /// The setting name of the fallback: lit with a wrap term (Unreal Substrate's Wrap tier).
 inline constexpr std::string_view kWrapSetting = "wrap";
@@ -35,7 +39,8 @@ struct QualityOption {
   std::string method;   ///< lit, separable, texture-space, ray-march, parallax
   std::string setting;  ///< the atlas's setting name ("preintegrated-17", "6g-opt", "50", ...; "wrap")
   /// Expected relative RMS error against the truth per ViewClass (the atlas's debiased rel RMS
-  /// when the JSON has it); a class the atlas lacks takes the mean of the others.
+  /// when the JSON has it); a class the atlas lacks takes the mean of the others (oblique: of
+  /// rest and grazing where it has both, the angle between them).
   std::array<double, kViewClassCount> relRms{};
   /// How well the atlas's truth resolved that error, per ViewClass: the standard error of the
   /// paired difference of squared rel RMS against the frame's best option (the atlas's
@@ -62,6 +67,11 @@ struct QualityTable {
   /// row's intercept, which the options' fixedMs are measured above.
   double frameOverheadMs = 0.0;
   std::string source;  ///< what it was read from, for reports
+  /// degrees, per ViewClass: the view angle of its atlas frame (the atlas JSON's
+  /// truth.frames[].view_angle_deg, as scene::organView measures it); nan where the atlas lacks
+  /// the frame or its angle. The controller's error follows the angle between them
+  /// (expectedSquaredError, controller.h).
+  std::array<double, kViewClassCount> viewAngleDeg{kNoAngle, kNoAngle, kNoAngle, kNoAngle, kNoAngle};
   /// The cost classes' keys (costClassKey), indexed by QualityOption::costClass.
   std::vector<std::string> costClasses;
   /// The option named (method, setting), or -1.
