@@ -217,6 +217,27 @@ void runFrames(QualityController& c, const std::vector<ObjectView>& objs, double
       });
 }
 
+// A scene offers an option once its settings are built (Scene::budgetOptionsPending): the
+// controller asks at once whether it gains, not after the hold.
+TEST(QualityController, AnOptionOfferedAnewIsWeighedAtOnce) {
+  const QualityTable t = table();
+  ControllerSettings s;
+  s.holdFrames = 1000;
+  QualityController c(t, s);
+  std::vector<ObjectView> objs(1);
+  objs[0].footprintPx = 3000;
+  objs[0].allowed = {t.find("lit", "default"), t.find("lit", "wrap")};
+  for (int f = 0; f < 3; ++f)
+    EXPECT_EQ(c.update(objs, kScreenPx, 1000.0)[0].method, "lit");
+  objs[0].allowed.push_back(t.find("ray-march", "50"));  // built meanwhile
+  EXPECT_EQ(c.update(objs, kScreenPx, 1000.0)[0].setting, "50");
+  // The same offer again: the plan is held.
+  const int changes = c.plansChanged();
+  for (int f = 0; f < 5; ++f)
+    c.update(objs, kScreenPx, 1000.0);
+  EXPECT_EQ(c.plansChanged(), changes);
+}
+
 TEST(QualityController, HysteresisHoldsThePlanUnderNoisyCosts) {
   ControllerSettings s;
   s.holdFrames = 10;

@@ -119,6 +119,28 @@ TEST(SceneBudget, FramesOfOptionsTheHostChoseTeachTheControllerTheirCosts) {
   EXPECT_TRUE(scene.budgetChoices().empty());
 }
 
+// An option's settings are a CPU fit (separable kernels, texture space's Gaussians: 9-104 ms);
+// they are built on the scene's worker from the budget on, and the controller is offered the
+// built ones, so that no frame waits for a fit. A host's loading screen may wait for them all.
+TEST(SceneBudget, OptionSettingsAreBuiltOffTheFramePathFromTheBudgetOn) {
+  Scene scene = threeLivers();
+  EXPECT_EQ(scene.budgetOptionsPending(), 0u);  // no budget: nothing offered yet
+  ASSERT_TRUE(scene.setBudgetMs(1000.0).ok());
+  // Every organ's offered options are queued at once (lit's built at once): some hundred fits,
+  // each a millisecond or more, are not done by the time setBudgetMs returns.
+  EXPECT_GT(scene.budgetOptionsPending(), 0u);
+  ASSERT_TRUE(scene.renderImage(240, 180).ok());  // a frame meanwhile chooses among the built ones
+  ASSERT_EQ(scene.budgetChoices().size(), 3u);
+  ASSERT_TRUE(scene.prepareBudgetOptions().ok());
+  EXPECT_EQ(scene.budgetOptionsPending(), 0u);
+  // All built: the close organ, under a budget anything fits, takes a method that scatters light
+  // (the table's error puts lit behind every other method on every frame).
+  for (int f = 0; f < 3; ++f)
+    ASSERT_TRUE(scene.renderImage(240, 180).ok());
+  EXPECT_NE(scene.budgetChoices()[0].method, "lit");
+  EXPECT_EQ(scene.budgetOptionsPending(), 0u);
+}
+
 TEST(SceneBudget, ABudgetMustBeAFiniteNumberOfMs) {
   Scene scene = threeLivers();
   EXPECT_FALSE(scene.setBudgetMs(-1.0).ok());

@@ -423,7 +423,12 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
     // The plan is searched only where it may change: held too long to keep without asking, or
     // over the budget.
     const bool overHeld = held.predictedMs * tail > budgetMs * (1.0 + s.overBudgetTolerance);
-    const bool due = m_age >= s.holdFrames || newBudget;
+    // Options offered anew (a host's scene builds settings off the frame path and offers them as
+    // they are ready): worth asking at once, not after the hold.
+    bool offerChanged = m_lastObjects.size() != objects.size();
+    for (std::size_t i = 0; i < objects.size() && !offerChanged; ++i)
+      offerChanged = objects[i].allowed != m_lastObjects[i].allowed;
+    const bool due = m_age >= s.holdFrames || newBudget || offerChanged;
     if (due || overHeld) {
       best = choosePlan(m_table, costs, m_overheadMs, objects, screenPx, budgetMs / tail, s, passMs);
       const bool over = overHeld && best.predictedMs < held.predictedMs;

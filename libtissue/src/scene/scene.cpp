@@ -3,10 +3,16 @@
 #include "tissue/scene/scene.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
+#include <memory>
+#include <set>
 #include <string>
+#include <thread>
 #include <utility>
+
+#include "option_preparer.h"
 
 #include "tissue/context/headless_context.h"
 #include "tissue/core/atomic_file.h"
@@ -83,11 +89,17 @@ struct Scene::Impl {
     int budgetOption = -1;
     bool optionNew = true;     ///< its method changed since the last frame learned from
     double footprintPx = 0.0;  ///< px covered at the last render (organView)
-    std::map<int, render::MethodSettings> optionSettings;  ///< built once per option
-    std::vector<int> offered;                              ///< table options its material offers
+    /// Built once per option: lit's at once, the others by the preparer (off the frame path),
+    /// the host's setMethodOption's when it sets one. The controller is offered only these.
+    std::map<int, render::MethodSettings> optionSettings;
+    std::vector<int> offered;     ///< table options its material offers
+    std::set<int> unbuilt;        ///< offered options whose settings failed to build (never offered)
     std::size_t objectIndex = 0;  ///< its index in render::Scene::objects (buildObjects)
   };
   std::vector<Organ> organs;
+  /// Builds the organs' offered options off the frame path (option_preparer.h); made with the
+  /// first budget frame.
+  std::unique_ptr<detail::OptionPreparer> preparer;
 
   render::Scene scene;  ///< lights, background, exposure; objects rebuilt per render
   std::optional<render::Camera> fixedCamera;
@@ -122,17 +134,17 @@ struct Scene::Impl {
           o.footprintPx = organView(o.assets.bounds, o.model, lastCamera, width, height).footprintPx;
       return {};
     }
-    if (auto c = ensureController(); !c) return c.error();
+    if (auto offered = offerOptions(); !offered) return offered;
+    collectPrepared();
     const quality::QualityTable& table = controller->table();
     std::vector<quality::ObjectView> views;
     for (Organ& o : organs) {
-      if (o.offered.empty()) o.offered = offeredOptions(table, o.assets);
       quality::ObjectView v = organView(o.assets.bounds, o.model, lastCamera, width, height);
       o.footprintPx = v.footprintPx;
       v.deforming = o.moved;
       v.importance = o.importance;
       v.hasNormalMap = o.hasNormalMap;
-      v.allowed = o.offered;
+      v.allowed = readyOptions(o);
       views.push_back(std::move(v));
     }
     const auto& chosen = controller->update(views, double(width) * double(height), budgetMs);
@@ -155,6 +167,67 @@ struct Scene::Impl {
                                std::string(quality::viewClassFrame(c.view)), c.fallback, c.mesh});
     }
     return {};
+  }
+  /// Each organ's offered table options, their settings queued for building (once per organ).
+  Result<void> offerOptions() {
+    if (auto c = ensureController(); !c) return c.error();
+    const quality::QualityTable& table = controller->table();
+    for (std::size_t i = 0; i < organs.size(); ++i)
+      if (organs[i].offered.empty()) {
+        organs[i].offered = offeredOptions(table, organs[i].assets);
+        prepareOptions(i);
+      }
+    return {};
+  }
+  /// Builds organ i's offered options: lit's at once (a uniform, no fit), the others queued for
+  /// the preparer, so that the frame that first chooses one does not pay its fit (9-104 ms).
+  void prepareOptions(std::size_t i) {
+    Organ& o = organs[i];
+    const quality::QualityTable& table = controller->table();
+    detail::PrepareJob job;
+    job.organ = i;
+    for (int k : o.offered) {
+      if (o.optionSettings.count(k)) continue;
+      const quality::QualityOption& option = table.options[std::size_t(k)];
+      if (option.method == "lit") {
+        if (auto m = methodOfOption(option, o.assets, o.textures, o.choices))
+          o.optionSettings.emplace(k, std::move(*m));
+        else
+          o.unbuilt.insert(k);
+      } else {
+        job.options.push_back({k, option});
+      }
+    }
+    if (job.options.empty()) return;
+    job.assets = std::make_shared<const OrganAssets>(o.assets);
+    job.textures = o.textures;
+    job.choices = o.choices;
+    if (!preparer) preparer = std::make_unique<detail::OptionPreparer>();
+    preparer->add(std::move(job));
+  }
+  /// The options the preparer finished since the last frame (never waits for one).
+  void collectPrepared() {
+    if (!preparer) return;
+    for (detail::PreparedOption& p : preparer->collect()) {
+      if (p.organ >= organs.size()) continue;
+      Organ& o = organs[p.organ];
+      if (p.settings)
+        o.optionSettings.emplace(p.option, std::move(*p.settings));
+      else
+        o.unbuilt.insert(p.option);
+    }
+  }
+  /// The organ's offered options whose settings are built (the controller's choice for it): all
+  /// offered ones once the preparer is done; never empty while any is built.
+  static std::vector<int> readyOptions(const Organ& o) {
+    std::vector<int> ready;
+    for (int k : o.offered)
+      if (o.optionSettings.count(k)) ready.push_back(k);
+    if (ready.empty()) {  // nothing built (no lit offered): the offered ones, built when chosen
+      for (int k : o.offered)
+        if (!o.unbuilt.count(k)) ready.push_back(k);
+    }
+    return ready;
   }
   /// The last frame's measured costs: each organ's own passes and draws (framePassCosts) and each
   /// method's passes of no object; the instruments' and the frame's passes are overhead. Under a
@@ -407,10 +480,12 @@ Result<void> Scene::setMethodOption(OrganId id, const quality::QualityOption& op
   if (!m_impl->renderer) return Error{"setMethodOption: this scene has no renderer (SceneSettings::gl)"};
   auto settings = methodOfOption(option, (*o)->assets, (*o)->textures, (*o)->choices);
   if (!settings) return settings.error();
-  // The option's index in the controller's table: its frames teach the controller its cost.
+  // The option's index in the controller's table: its frames teach the controller its cost, and
+  // its settings are kept for a budget's choice of it.
   if (auto c = m_impl->ensureController(); !c) return c.error();
-  (*o)->method = std::move(*settings);
   (*o)->budgetOption = m_impl->controller->table().find(option.method, option.setting);
+  if ((*o)->budgetOption >= 0) (*o)->optionSettings.emplace((*o)->budgetOption, *settings);
+  (*o)->method = std::move(*settings);
   (*o)->optionNew = true;
   m_impl->syncMeshWork(**o, render::shadingMethod((*o)->method));
   return {};
@@ -493,6 +568,25 @@ Result<void> Scene::setBudgetMs(double budgetMs) {
     return Error{"budget: this scene has no renderer (SceneSettings::gl)"};
   m_impl->budgetMs = budgetMs;
   if (budgetMs == 0.0) m_impl->budgetChoices.clear();
+  if (budgetMs > 0.0) return m_impl->offerOptions();  // their settings start building now
+  return {};
+}
+std::size_t Scene::budgetOptionsPending() const {
+  std::size_t pending = 0;
+  for (const auto& o : m_impl->organs)
+    for (int k : o.offered)
+      pending += o.optionSettings.count(k) || o.unbuilt.count(k) ? 0 : 1;
+  return pending;
+}
+Result<void> Scene::prepareBudgetOptions() {
+  if (!m_impl->renderer) return Error{"prepareBudgetOptions: this scene has no renderer (SceneSettings::gl)"};
+  if (auto offered = m_impl->offerOptions(); !offered) return offered;
+  // The worker always moves on (each option ends built or failed), so this ends.
+  while (budgetOptionsPending() > 0) {
+    m_impl->collectPrepared();
+    if (budgetOptionsPending() == 0) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
   return {};
 }
 double Scene::budgetMs() const {

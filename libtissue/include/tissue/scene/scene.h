@@ -210,6 +210,15 @@ class Scene {
   const std::vector<BudgetChoice>& budgetChoices() const;
   /// The controller (its table, learned costs, plan); nullptr until a budget is set.
   const quality::QualityController* qualityController() const;
+  /// The organs' offered table options whose renderer settings are still being built. An option's
+  /// settings are a CPU fit of the material's optics (separable kernels ~10 ms, texture space's
+  /// Gaussians up to ~100 ms each, 2-core VM), built on a worker thread from the first budget on
+  /// (setBudgetMs, or an organ's first budgeted frame), never on the frame path: the controller
+  /// chooses among the built ones (lit's at once). 0 once all are, and while no budget was set.
+  std::size_t budgetOptionsPending() const;
+  /// Waits on the calling thread until every organ's offered options are built (a host's loading
+  /// screen: its first budgeted frames then choose from all). Not for the frame path.
+  Result<void> prepareBudgetOptions();
 
   /// The renderer (context current for its calls), e.g. for its last timings; SceneSettings::gl only.
   render::Renderer& renderer();
