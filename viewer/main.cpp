@@ -53,6 +53,10 @@ int main(int argc, char** argv) {
                  "record the session (pose, grasp, camera, method) into this file");
   app.add_option("--replay", options.replay, "drive the viewer by a recorded session (data/sessions/*.json)");
   app.add_option("--log", options.log, "write one CSV line per frame: phase ms, force N, grasp");
+  app.add_option("--budget-ms", options.budgetMs,
+                 "start under this frame budget, ms: the quality controller chooses the organ's method and "
+                 "setting (0: off; the panel's slider changes it)")
+      ->check(CLI::Range(0.0, 1e6));
   app.get_option("--replay")->excludes("--poke-script")->excludes("--record");
   try {
     app.parse(argc, argv);

@@ -84,7 +84,13 @@ void report(Viewer& v, FrameTimer& timer) {
                 v.last.simulation.grasped);
   char head[32];
   std::snprintf(head, sizeof head, "%.1f fps | ", fps);
-  const std::string line = methodName(v.methods[v.method]) + " | " + head + totals.summary() + tail;
+  std::string line = methodName(v.methods[v.method]) + " | " + head + totals.summary() + tail;
+  if (v.budgetChoice) {  // under a budget: what the controller drew, and the options still being built
+    char budget[160];
+    std::snprintf(budget, sizeof budget, " | budget %.1f ms: %s %s (%zu options pending)", v.budgetMs,
+                  v.budgetChoice->method.c_str(), v.budgetChoice->setting.c_str(), v.budgetOptions.pending());
+    line += budget;
+  }
   v.window->setTitle("tissue-viewer - " + line);
   std::printf("tissue-viewer: %s\n", line.c_str());
   std::fflush(stdout);
@@ -253,6 +259,7 @@ Result<void> runViewer(const ViewerOptions& options) {
   Viewer v;
   if (auto ok = loadOrgan(v, scenarioFile, options.folders); !ok) return ok;
   v.scripted = options.pokeScript;
+  v.budgetMs = options.budgetMs;
   if (auto ok = createLoop(v); !ok) return ok;
   if (session) {
     if (auto match = scene::checkSessionMatches(*session, *v.loop); !match) return match;

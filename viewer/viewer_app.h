@@ -35,6 +35,9 @@ struct ViewerOptions {
                                  ///< tissue-viewer-session.json
   std::filesystem::path replay;  ///< drive the viewer by this recorded session; empty: none
   std::filesystem::path log;     ///< one CSV line per frame (phases ms, force N); empty: none
+  /// ms; > 0: start under this frame budget (the quality controller chooses the organ's method,
+  /// issue 16; the panel's slider changes it); 0: off
+  double budgetMs = 0.0;
 };
 
 /// Runs the viewer until the window closes, Esc, or the frames run out. The error is one line

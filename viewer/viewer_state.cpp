@@ -141,15 +141,17 @@ Result<void> applyBudget(Viewer& v, int width, int height) {
     return {};
   }
   if (!v.controller) v.controller.emplace(quality::defaultQualityTable());
+  // The options' settings are built off the frame path; the controller chooses among the built.
+  v.budgetOptions.offer(0, v.controller->table(), v.organ, v.textures, v.choices);
+  v.budgetOptions.collect();
   quality::ObjectView view = scene::organView(v.box, kIdentity4, v.scene.camera, width, height);
   view.deforming = v.last.simulation.contacts > 0 || v.last.simulation.grasped > 0;
   view.hasNormalMap = v.normalMapping && bool(v.textures.normalMap);
-  view.allowed = scene::offeredOptions(v.controller->table(), v.organ);
+  view.allowed = v.budgetOptions.ready(0);
   const quality::ObjectChoice& c =
       v.controller->update({&view, 1}, double(width) * double(height), v.budgetMs)[0];
   if (c.option != v.budgetOption) {
-    auto m = scene::methodOfOption(v.controller->table().options[std::size_t(c.option)], v.organ, v.textures,
-                                   v.choices);
+    auto m = v.budgetOptions.chosen(0, c.option, v.controller->table(), v.organ, v.textures, v.choices);
     if (!m) return m.error();
     v.budgetMethod = std::move(*m);
     v.budgetOption = c.option;

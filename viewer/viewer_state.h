@@ -18,6 +18,7 @@
 #include "tissue/render/renderer.h"
 #include "tissue/scenario/scenario.h"
 #include "tissue/scene/budget.h"
+#include "tissue/scene/option_catalog.h"
 #include "tissue/scene/organ_assets.h"
 #include "tissue/scene/organ_loop.h"
 #include "tissue/scene/organ_methods.h"
@@ -67,6 +68,7 @@ struct Viewer {
   std::optional<scene::BudgetChoice> budgetChoice;  ///< the last frame's choice
   int budgetOption = -1;                            ///< the table option of budgetMethod
   render::MethodSettings budgetMethod;
+  scene::OptionCatalog budgetOptions;  ///< the organ's options, their settings built off the frame path
 };
 
 /// With a budget: the controller's choice for this frame (camera, `width` x `height`) as the

@@ -7,7 +7,8 @@
 #  2 that session replayed (--replay), with layered parallax recorded as the method: the
 #    same forces frame by frame (deterministic), the method switched, the same checks;
 #  3 the ray-march method for a few frames: an organ, and not the lit picture;
-#  4 a session of tissue-sim demo --record replays in the viewer.
+#  4 a session of tissue-sim demo --record replays in the viewer;
+#  5 the viewer under a frame budget (--budget-ms) reports the controller's choice.
 # Fails (never skips) when no window can be created: xvfb-run is part of the build's dependencies.
 set -u
 viewer="$1"; sim="$2"; dir="$3"; mkdir -p "$dir"
@@ -60,6 +61,13 @@ grep -q "parallax$" "$dir/replay.csv" || { echo "FAIL: the recorded method was n
 run lit --frames 3
 run raymarch --frames 3 --method ray-march
 python3 "$check" organ "$dir/raymarch.png" && python3 "$check" differ "$dir/raymarch.png" "$dir/lit.png" || exit 1
+
+# 5 under a frame budget: the controller's choice is drawn and reported (its options' settings are
+#   built on the catalog's worker meanwhile; lit's from the first frame).
+run budget --frames 40 --poke-script --budget-ms 5000
+grep -Eq "\| budget 5000.0 ms: (lit|separable|texture-space|ray-march|parallax) [a-z0-9-]+ \([0-9]+ options pending\)" "$dir/budget.log" ||
+  { echo "FAIL: the viewer under --budget-ms does not report the controller's choice"; cat "$dir/budget.log"; exit 1; }
+python3 "$check" organ "$dir/budget.png" || exit 1
 
 "$sim" demo --out "$dir/demo" --frames 30 --width 64 --height 48 --loop-width 64 --loop-height 48 --record "$dir/demo_session.json" >"$dir/demo.log" 2>&1 ||
   { echo "FAIL: tissue-sim demo --record:"; tail -5 "$dir/demo.log"; exit 1; }

@@ -3,22 +3,19 @@
 #include "tissue/scene/scene.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <map>
-#include <memory>
-#include <set>
 #include <string>
-#include <thread>
 #include <utility>
 
-#include "option_preparer.h"
+#include "tissue/scene/option_catalog.h"
 
 #include "tissue/context/headless_context.h"
 #include "tissue/core/atomic_file.h"
 #include "tissue/core/stopwatch.h"
 #include "tissue/mesh/deformable_surface.h"
 #include "tissue/scenario/scenario.h"
+#include "tissue/scene/option_catalog.h"
 
 namespace tissue::scene {
 namespace {
@@ -87,19 +84,14 @@ struct Scene::Impl {
     /// The quality table option it is drawn with (the budget's choice or setMethodOption's); -1:
     /// a method of its own (setMethod, OrganDesc::method)
     int budgetOption = -1;
-    bool optionNew = true;     ///< its method changed since the last frame learned from
-    double footprintPx = 0.0;  ///< px covered at the last render (organView)
-    /// Built once per option: lit's at once, the others by the preparer (off the frame path),
-    /// the host's setMethodOption's when it sets one. The controller is offered only these.
-    std::map<int, render::MethodSettings> optionSettings;
-    std::vector<int> offered;     ///< table options its material offers
-    std::set<int> unbuilt;        ///< offered options whose settings failed to build (never offered)
+    bool optionNew = true;        ///< its method changed since the last frame learned from
+    double footprintPx = 0.0;     ///< px covered at the last render (organView)
     std::size_t objectIndex = 0;  ///< its index in render::Scene::objects (buildObjects)
   };
   std::vector<Organ> organs;
-  /// Builds the organs' offered options off the frame path (option_preparer.h); made with the
-  /// first budget frame.
-  std::unique_ptr<detail::OptionPreparer> preparer;
+  /// Each organ's offered table options and their settings, built off the frame path
+  /// (option_catalog.h) from the first budget on; indexed as `organs`.
+  OptionCatalog options;
 
   render::Scene scene;  ///< lights, background, exposure; objects rebuilt per render
   std::optional<render::Camera> fixedCamera;
@@ -135,16 +127,16 @@ struct Scene::Impl {
       return {};
     }
     if (auto offered = offerOptions(); !offered) return offered;
-    collectPrepared();
-    const quality::QualityTable& table = controller->table();
+    options.collect();
     std::vector<quality::ObjectView> views;
-    for (Organ& o : organs) {
+    for (std::size_t i = 0; i < organs.size(); ++i) {
+      Organ& o = organs[i];
       quality::ObjectView v = organView(o.assets.bounds, o.model, lastCamera, width, height);
       o.footprintPx = v.footprintPx;
       v.deforming = o.moved;
       v.importance = o.importance;
       v.hasNormalMap = o.hasNormalMap;
-      v.allowed = readyOptions(o);
+      v.allowed = options.ready(i);  // the built ones: no frame waits for a fit
       views.push_back(std::move(v));
     }
     const auto& chosen = controller->update(views, double(width) * double(height), budgetMs);
@@ -153,13 +145,9 @@ struct Scene::Impl {
       Organ& o = organs[i];
       const quality::ObjectChoice& c = chosen[i];
       if (c.option != o.budgetOption) {
-        auto it = o.optionSettings.find(c.option);
-        if (it == o.optionSettings.end()) {
-          auto m = methodOfOption(table.options[std::size_t(c.option)], o.assets, o.textures, o.choices);
-          if (!m) return Error{"budget: organ " + std::to_string(i) + ": " + m.error().message};
-          it = o.optionSettings.emplace(c.option, std::move(*m)).first;
-        }
-        o.method = it->second;
+        auto m = options.chosen(i, c.option, controller->table(), o.assets, o.textures, o.choices);
+        if (!m) return Error{"budget: organ " + std::to_string(i) + ": " + m.error().message};
+        o.method = std::move(*m);
         o.budgetOption = c.option;
         o.optionNew = true;
       }
@@ -171,63 +159,9 @@ struct Scene::Impl {
   /// Each organ's offered table options, their settings queued for building (once per organ).
   Result<void> offerOptions() {
     if (auto c = ensureController(); !c) return c.error();
-    const quality::QualityTable& table = controller->table();
     for (std::size_t i = 0; i < organs.size(); ++i)
-      if (organs[i].offered.empty()) {
-        organs[i].offered = offeredOptions(table, organs[i].assets);
-        prepareOptions(i);
-      }
+      options.offer(i, controller->table(), organs[i].assets, organs[i].textures, organs[i].choices);
     return {};
-  }
-  /// Builds organ i's offered options: lit's at once (a uniform, no fit), the others queued for
-  /// the preparer, so that the frame that first chooses one does not pay its fit (9-104 ms).
-  void prepareOptions(std::size_t i) {
-    Organ& o = organs[i];
-    const quality::QualityTable& table = controller->table();
-    detail::PrepareJob job;
-    job.organ = i;
-    for (int k : o.offered) {
-      if (o.optionSettings.count(k)) continue;
-      const quality::QualityOption& option = table.options[std::size_t(k)];
-      if (option.method == "lit") {
-        if (auto m = methodOfOption(option, o.assets, o.textures, o.choices))
-          o.optionSettings.emplace(k, std::move(*m));
-        else
-          o.unbuilt.insert(k);
-      } else {
-        job.options.push_back({k, option});
-      }
-    }
-    if (job.options.empty()) return;
-    job.assets = std::make_shared<const OrganAssets>(o.assets);
-    job.textures = o.textures;
-    job.choices = o.choices;
-    if (!preparer) preparer = std::make_unique<detail::OptionPreparer>();
-    preparer->add(std::move(job));
-  }
-  /// The options the preparer finished since the last frame (never waits for one).
-  void collectPrepared() {
-    if (!preparer) return;
-    for (detail::PreparedOption& p : preparer->collect()) {
-      if (p.organ >= organs.size()) continue;
-      Organ& o = organs[p.organ];
-      if (p.settings)
-        o.optionSettings.emplace(p.option, std::move(*p.settings));
-      else
-        o.unbuilt.insert(p.option);
-    }
-  }
-  /// The organ's offered options whose settings are built (the controller's choice for it): all
-  /// offered ones once the preparer is done; never empty while any is built.
-  static std::vector<int> readyOptions(const Organ& o) {
-    std::vector<int> ready;
-    for (int k : o.offered)
-      if (o.optionSettings.count(k)) ready.push_back(k);
-    if (ready.empty()) {  // nothing built (no lit offered): the offered ones, built when chosen
-      for (int k : o.offered)
-        if (!o.unbuilt.count(k)) ready.push_back(k);
-    }
-    return ready;
   }
   /// The last frame's measured costs: each organ's own passes and draws (framePassCosts) and each
   /// method's passes of no object; the instruments' and the frame's passes are overhead. Under a
@@ -484,7 +418,7 @@ Result<void> Scene::setMethodOption(OrganId id, const quality::QualityOption& op
   // its settings are kept for a budget's choice of it.
   if (auto c = m_impl->ensureController(); !c) return c.error();
   (*o)->budgetOption = m_impl->controller->table().find(option.method, option.setting);
-  if ((*o)->budgetOption >= 0) (*o)->optionSettings.emplace((*o)->budgetOption, *settings);
+  if ((*o)->budgetOption >= 0) m_impl->options.keep(id, (*o)->budgetOption, *settings);
   (*o)->method = std::move(*settings);
   (*o)->optionNew = true;
   m_impl->syncMeshWork(**o, render::shadingMethod((*o)->method));
@@ -572,21 +506,12 @@ Result<void> Scene::setBudgetMs(double budgetMs) {
   return {};
 }
 std::size_t Scene::budgetOptionsPending() const {
-  std::size_t pending = 0;
-  for (const auto& o : m_impl->organs)
-    for (int k : o.offered)
-      pending += o.optionSettings.count(k) || o.unbuilt.count(k) ? 0 : 1;
-  return pending;
+  return m_impl->options.pending();
 }
 Result<void> Scene::prepareBudgetOptions() {
   if (!m_impl->renderer) return Error{"prepareBudgetOptions: this scene has no renderer (SceneSettings::gl)"};
   if (auto offered = m_impl->offerOptions(); !offered) return offered;
-  // The worker always moves on (each option ends built or failed), so this ends.
-  while (budgetOptionsPending() > 0) {
-    m_impl->collectPrepared();
-    if (budgetOptionsPending() == 0) break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
+  m_impl->options.finish();
   return {};
 }
 double Scene::budgetMs() const {
