@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <variant>
 
+#include "../studies/data_organ.h"
 #include "tissue/quality/quality_table.h"
 #include "tissue/scene/budget.h"
 
@@ -15,12 +16,7 @@ namespace tissue::scene {
 namespace {
 
 OrganSource dataLiver() {
-  const std::filesystem::path data = TISSUE_TEST_DATA_DIR;
-  OrganSource source;
-  source.mesh = data / "meshes" / "liver.obj";
-  source.material = data / "materials" / "liver.json";
-  source.materialOptions.textureRoots = {TISSUE_TEST_GENERATED_DATA_DIR, data};
-  return source;
+  return studies::testdata::dataOrgan("liver");
 }
 
 TEST(OptionCatalog, BuildsEveryOfferedOptionOffTheCallersThreadAndOffersTheBuiltOnes) {
