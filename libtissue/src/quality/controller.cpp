@@ -469,6 +469,8 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
   }
   m_lastObjects.assign(objects.begin(), objects.end());
   m_choices.clear();
+  ControllerSettings uncharged = s;  // the reported error: the table's, without the charge
+  uncharged.errorConfidence = 0.0;
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const int o = m_plan.option[i];
     const QualityOption& opt = m_table.options[std::size_t(o)];
@@ -478,8 +480,6 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
     c.setting = opt.setting;
     c.predictedMs = costOf(costs, o, objects[i]);
     c.view = viewClassOf(objects[i], screenPx, s);
-    ControllerSettings uncharged = s;
-    uncharged.errorConfidence = 0.0;
     c.expectedRelRms = std::sqrt(expectedSquaredError(m_table, o, objects[i], c.view, uncharged));
     c.fallback = objects[i].footprintPx < s.minFootprintPx;
     c.mesh = meshWorkOf(opt.method, objects[i].hasNormalMap);

@@ -4,11 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <string>
 #include <utility>
-
-#include "tissue/scene/option_catalog.h"
 
 #include "tissue/context/headless_context.h"
 #include "tissue/core/atomic_file.h"
