@@ -87,6 +87,11 @@ TISSUE_C_API int tissue_scene_set_host_depth(tissue_scene* scene, int share_dept
  * choose every organ's method and setting from its footprint, distance, view angle and motion so
  * that the frame fits, learning the costs from the measured passes (issue 16). */
 TISSUE_C_API int tissue_scene_set_budget_ms(tissue_scene* scene, double budget_ms);
+/* Under a budget, each organ's method settings (CPU fits, up to ~0.1 s each) are built on a worker
+ * thread and offered to the controller as they are ready, so no frame waits for one. This waits
+ * until all are built (a loading screen; not for the frame path). *pending (may be NULL): how
+ * many were still being built when it was called. */
+TISSUE_C_API int tissue_scene_prepare_budget_options(tissue_scene* scene, long* pending);
 /* What the controller chose for the organ at the last render, "<method> <setting>" (e.g.
  * "lit wrap", "ray-march 10"), NUL-terminated into text (size bytes); "" while the budget is off. */
 TISSUE_C_API int tissue_organ_chosen_method(const tissue_organ* organ, char* text, int size);

@@ -126,6 +126,16 @@ int tissue_scene_set_budget_ms(tissue_scene* scene, double budget_ms) {
   });
 }
 
+int tissue_scene_prepare_budget_options(tissue_scene* scene, long* pending) {
+  return guarded("tissue_scene_prepare_budget_options", [&] {
+    if (!scene) return fail(TISSUE_ERROR_ARGUMENT, "tissue_scene_prepare_budget_options: scene is NULL");
+    if (pending) *pending = long(scene->scene->budgetOptionsPending());
+    auto r = scene->scene->prepareBudgetOptions();
+    return r ? TISSUE_OK
+             : fail(TISSUE_ERROR_ARGUMENT, "tissue_scene_prepare_budget_options: " + r.error().message);
+  });
+}
+
 int tissue_organ_chosen_method(const tissue_organ* organ, char* text, int size) {
   return guarded("tissue_organ_chosen_method", [&] {
     if (!organ || !text || size <= 0)
