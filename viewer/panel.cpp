@@ -101,8 +101,12 @@ PanelActions Panel::build(const PanelView& v) {
   if (ImGui::SliderFloat("budget ms", &budget, 0.0f, 100.0f, budget > 0.0f ? "%.1f" : "off"))
     a.budgetMs = budget;
   if (!v.budgetChoice.empty()) ImGui::TextWrapped("chosen: %s", v.budgetChoice.c_str());
+  // Under a budget the controller owns the method: the switches show what it drew, greyed out,
+  // and its setting is the "chosen" line's (the panel's own settings return with the budget off).
+  ImGui::BeginDisabled(!v.budgetChoice.empty());
   methodSwitches(v, a);
-  methodSettings(v, a);
+  ImGui::EndDisabled();
+  if (v.budgetChoice.empty()) methodSettings(v, a);
   if (ImGui::CollapsingHeader("tissue")) {
     for (const auto& line : v.tissue)
       ImGui::TextUnformatted(line.c_str());

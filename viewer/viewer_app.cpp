@@ -84,11 +84,11 @@ void report(Viewer& v, FrameTimer& timer) {
                 v.last.simulation.grasped);
   char head[32];
   std::snprintf(head, sizeof head, "%.1f fps | ", fps);
-  std::string line = methodName(v.methods[v.method]) + " | " + head + totals.summary() + tail;
-  if (v.budgetChoice) {  // under a budget: what the controller drew, and the options still being built
-    char budget[160];
-    std::snprintf(budget, sizeof budget, " | budget %.1f ms: %s %s (%zu options pending)", v.budgetMs,
-                  v.budgetChoice->method.c_str(), v.budgetChoice->setting.c_str(), v.budgetOptions.pending());
+  std::string line = drawnMethod(v) + " | " + head + totals.summary() + tail;
+  if (v.budgetChoice) {  // under a budget: the budget, and the options still being built
+    char budget[96];
+    std::snprintf(budget, sizeof budget, " | budget %.1f ms (%zu options pending)", v.budgetMs,
+                  v.budgetOptions.pending());
     line += budget;
   }
   v.window->setTitle("tissue-viewer - " + line);
@@ -136,6 +136,9 @@ PanelView panelView(const Viewer& v, const FrameTimer& timer) {
                   v.budgetChoice->setting.c_str(), v.budgetChoice->fallback ? " (fallback)" : "",
                   v.budgetChoice->footprintPx, v.budgetChoice->view.c_str(), v.budgetChoice->predictedMs);
     p.budgetChoice = line;
+    // The switches show the method the controller drew (its settings are the table option's).
+    for (std::size_t i = 0; i < p.methods.size(); ++i)
+      if (p.methods[i] == v.budgetChoice->method) p.method = i;
   }
   return p;
 }

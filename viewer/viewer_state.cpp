@@ -201,6 +201,11 @@ Result<void> toggleRecording(Viewer& v) {
   return {};
 }
 
+std::string drawnMethod(const Viewer& v) {
+  if (v.budgetChoice) return v.budgetChoice->method + " " + v.budgetChoice->setting;
+  return methodName(v.methods[v.method]);
+}
+
 void logFrame(Viewer& v, const FrameTimer& /*timer*/, const scene::LoopFrame& f) {
   v.maxForceN = std::max(v.maxForceN, f.simulation.forceMagnitudeN);
   if (!v.log.is_open()) return;
@@ -208,7 +213,7 @@ void logFrame(Viewer& v, const FrameTimer& /*timer*/, const scene::LoopFrame& f)
   std::snprintf(line, sizeof line, "%ld,%.3f,%.3f,%.3f,%.3f,%.3f,%.5f,%u,%u,", f.simulation.frame,
                 f.ms.simulateMs, f.ms.meshMs, f.ms.uploadMs, f.ms.renderMs, f.ms.totalMs,
                 f.simulation.forceMagnitudeN, f.simulation.contacts, f.simulation.grasped);
-  v.log << line << methodName(v.methods[v.method]) << '\n';
+  v.log << line << drawnMethod(v) << '\n';
 }
 
 std::vector<std::string> tissueLines(const scenario::Scenario& s) {

@@ -85,6 +85,9 @@ Result<void> loadOrgan(Viewer& v, const std::filesystem::path& scenarioFile, con
 
 /// The name of a method ("lit", "separable", "texture-space", "ray-march", "parallax").
 std::string methodName(const render::MethodSettings& method);
+/// The method drawn this frame: the budget's choice ("<method> <setting>") under a budget, else
+/// the panel's method.
+std::string drawnMethod(const Viewer& v);
 /// The index of the method called `name` in `methods`; the error says which names this organ offers.
 Result<std::size_t> findMethod(const std::vector<render::MethodSettings>& methods, const std::string& name);
 

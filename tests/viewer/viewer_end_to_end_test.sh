@@ -65,8 +65,11 @@ python3 "$check" organ "$dir/raymarch.png" && python3 "$check" differ "$dir/raym
 # 5 under a frame budget: the controller's choice is drawn and reported (its options' settings are
 #   built on the catalog's worker meanwhile; lit's from the first frame).
 run budget --frames 40 --poke-script --budget-ms 5000
-grep -Eq "\| budget 5000.0 ms: (lit|separable|texture-space|ray-march|parallax) [a-z0-9-]+ \([0-9]+ options pending\)" "$dir/budget.log" ||
+grep -Eq "^tissue-viewer: (lit|separable|texture-space|ray-march|parallax) [a-z0-9-]+ \|.*\| budget 5000.0 ms \([0-9]+ options pending\)" "$dir/budget.log" ||
   { echo "FAIL: the viewer under --budget-ms does not report the controller's choice"; cat "$dir/budget.log"; exit 1; }
+# the per-frame log names the drawn option (method and setting) under the budget
+tail -n 1 "$dir/budget.csv" | grep -Eq ",(lit|separable|texture-space|ray-march|parallax) [a-z0-9-]+$" ||
+  { echo "FAIL: the per-frame log under --budget-ms does not name the drawn option"; tail -n 2 "$dir/budget.csv"; exit 1; }
 python3 "$check" organ "$dir/budget.png" || exit 1
 
 "$sim" demo --out "$dir/demo" --frames 30 --width 64 --height 48 --loop-width 64 --loop-height 48 --record "$dir/demo_session.json" >"$dir/demo.log" 2>&1 ||
