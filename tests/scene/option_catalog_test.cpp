@@ -69,7 +69,9 @@ TEST(OptionCatalog, BuildsEveryOfferedOptionOffTheCallersThreadAndOffersTheBuilt
   // A failed option asked for anyway says why.
   const int march = table.find("ray-march", "50");
   ASSERT_GE(march, 0);
-  EXPECT_FALSE(catalog.chosen(0, march, table, *assets, OrganTextures{}, MethodChoices{}).ok());
+  const auto refused = catalog.chosen(0, march, table, *assets, OrganTextures{}, MethodChoices{});
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.error().message.find("subsurface map"), std::string::npos) << refused.error().message;
 }
 
 TEST(OptionCatalog, ADestroyedCatalogStopsItsWorker) {

@@ -6,7 +6,6 @@
 #include <deque>
 #include <map>
 #include <mutex>
-#include <set>
 #include <string>
 #include <thread>
 #include <utility>
@@ -26,7 +25,7 @@ struct OptionCatalog::Impl {
     bool offered = false;
     std::vector<int> options;                     // offered, table indices
     std::map<int, render::MethodSettings> built;  // lit's at once, the others as the worker ends them
-    std::set<int> failed;                         // could not be built: never offered
+    std::map<int, std::string> failed;            // could not be built, and why: never offered
   };
   std::vector<Organ> organs;
   Organ& organ(std::size_t i) {
@@ -115,7 +114,7 @@ void OptionCatalog::offer(std::size_t organ, const quality::QualityTable& table,
       if (auto m = methodOfOption(option, assets, textures, choices))
         o.built.emplace(k, std::move(*m));
       else
-        o.failed.insert(k);
+        o.failed.emplace(k, m.error().message);
     } else {
       job.options.push_back({k, option});
     }
@@ -148,7 +147,7 @@ void OptionCatalog::collect() {
     if (d.settings)
       o.built.emplace(d.option, std::move(*d.settings));
     else
-      o.failed.insert(d.option);
+      o.failed.emplace(d.option, d.settings.error().message);
   }
 }
 
@@ -176,6 +175,9 @@ Result<render::MethodSettings> OptionCatalog::chosen(std::size_t organ, int opti
                                                      const OrganAssets& assets, const OrganTextures& textures,
                                                      const MethodChoices& choices) {
   if (const render::MethodSettings* built = settings(organ, option)) return *built;
+  if (organ < m_impl->organs.size())  // the worker's error, kept: not fitted again
+    if (const auto it = m_impl->organs[organ].failed.find(option); it != m_impl->organs[organ].failed.end())
+      return Error{it->second};
   if (option < 0 || std::size_t(option) >= table.options.size())
     return Error{"budget: option " + std::to_string(option) + " is not in the quality table"};
   auto m = methodOfOption(table.options[std::size_t(option)], assets, textures, choices);

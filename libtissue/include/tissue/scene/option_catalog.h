@@ -42,8 +42,9 @@ class OptionCatalog {
   std::vector<int> ready(std::size_t organ) const;
   /// The built settings of `option` for the organ, or nullptr.
   const render::MethodSettings* settings(std::size_t organ, int option) const;
-  /// The settings of the controller's choice `option` for the organ: the built ones, or (an
-  /// option offered before any was built: a table without lit) built now, once, and kept.
+  /// The settings of the controller's choice `option` for the organ: the built ones; the error
+  /// the worker met building it; or (an option offered before any was built: a table without
+  /// lit) built now, once, and kept.
   Result<render::MethodSettings> chosen(std::size_t organ, int option, const quality::QualityTable& table,
                                         const OrganAssets& assets, const OrganTextures& textures,
                                         const MethodChoices& choices);
