@@ -157,10 +157,10 @@ Result<void> applyBudget(Viewer& v, int width, int height) {
     v.budgetOption = c.option;
   }
   v.scene.objects[0].method = v.budgetMethod;
-  v.budgetChoice = scene::BudgetChoice{c.method,         c.setting,
-                                       view.footprintPx, c.predictedMs,
-                                       c.expectedRelRms, std::string(quality::viewClassFrame(c.view)),
-                                       c.fallback,       c.mesh};
+  v.budgetChoice =
+      scene::BudgetChoice{c.method,          c.setting,        view.footprintPx,
+                          c.predictedMs,     c.expectedRelRms, std::string(quality::viewClassFrame(c.view)),
+                          view.viewAngleDeg, c.fallback,       c.mesh};
   return {};
 }
 

@@ -727,6 +727,8 @@ TEST(QualityController, ViewClassFromFootprintAngleAndDeformation) {
   v.deforming = false;
   v.viewAngleDeg = 50;
   EXPECT_EQ(viewClassOf(v, kScreenPx), ViewClass::Oblique);
+  v.viewAngleDeg = 60;
+  EXPECT_EQ(viewClassOf(v, kScreenPx), ViewClass::Low);
   v.viewAngleDeg = 20;
   EXPECT_EQ(viewClassOf(v, kScreenPx), ViewClass::Rest);
 }
@@ -738,15 +740,18 @@ QualityTable angleTable() {
   QualityOption a = option("ray-march", "50", 0.0, 1.0, 1e-4),
                 b = option("separable", "guided-25", 0.0, 1.0, 1e-4);
   const auto set = [](QualityOption& o, ViewClass c, double e) { o.relRms[std::size_t(c)] = e; };
-  set(a, ViewClass::Rest, 0.10), set(a, ViewClass::Oblique, 0.20), set(a, ViewClass::Grazing, 0.30);
+  set(a, ViewClass::Rest, 0.10), set(a, ViewClass::Oblique, 0.20), set(a, ViewClass::Low, 0.25);
+  set(a, ViewClass::Grazing, 0.30);
   set(a, ViewClass::CloseUp, 0.15), set(a, ViewClass::Deforming, 0.12);
-  set(b, ViewClass::Rest, 0.20), set(b, ViewClass::Oblique, 0.20), set(b, ViewClass::Grazing, 0.20);
+  set(b, ViewClass::Rest, 0.20), set(b, ViewClass::Oblique, 0.20), set(b, ViewClass::Low, 0.20);
+  set(b, ViewClass::Grazing, 0.20);
   set(b, ViewClass::CloseUp, 0.18), set(b, ViewClass::Deforming, 0.22);
   t.options = {a, b};
   t.viewAngleDeg[std::size_t(ViewClass::Rest)] = 25;
   t.viewAngleDeg[std::size_t(ViewClass::Deforming)] = 25;
   t.viewAngleDeg[std::size_t(ViewClass::CloseUp)] = 25;
   t.viewAngleDeg[std::size_t(ViewClass::Oblique)] = 45;
+  t.viewAngleDeg[std::size_t(ViewClass::Low)] = 60;
   t.viewAngleDeg[std::size_t(ViewClass::Grazing)] = 80;
   return t;
 }
@@ -763,10 +768,12 @@ TEST(QualityController, TheExpectedErrorFollowsTheViewAngleBetweenTheAtlasFrames
   // On the frames' own angles, the frames' errors; between them, linear in the angle.
   EXPECT_NEAR(e(25, ViewClass::Rest), 0.01, 1e-12);
   EXPECT_NEAR(e(45, ViewClass::Oblique), 0.04, 1e-12);
+  EXPECT_NEAR(e(60, ViewClass::Low), 0.0625, 1e-12);
   EXPECT_NEAR(e(80, ViewClass::Grazing), 0.09, 1e-12);
   EXPECT_NEAR(e(35, ViewClass::Rest), 0.025, 1e-12);
-  EXPECT_NEAR(e(35, ViewClass::Oblique), 0.025, 1e-12);  // the class names the frame; the angle rules
-  EXPECT_NEAR(e(62.5, ViewClass::Oblique), 0.065, 1e-12);
+  EXPECT_NEAR(e(35, ViewClass::Oblique), 0.025, 1e-12);      // the class names the frame; the angle rules
+  EXPECT_NEAR(e(52.5, ViewClass::Oblique), 0.05125, 1e-12);  // between oblique and low
+  EXPECT_NEAR(e(70, ViewClass::Low), 0.07625, 1e-12);        // between low and grazing
   // Constant beyond the ends.
   EXPECT_NEAR(e(0, ViewClass::Rest), 0.01, 1e-12);
   EXPECT_NEAR(e(89, ViewClass::Grazing), 0.09, 1e-12);
@@ -801,7 +808,7 @@ TEST(QualityController, AnOrganSeenObliquelyTakesTheOptionThatLeadsAtItsAngle) {
   s.errorConfidence = 0.0;
   views[0].viewAngleDeg = 25;  // as the atlas's close-up: A (0.0225 against 0.0324)
   EXPECT_EQ(choosePlan(t, costs, 0.0, views, kScreenPx, 1e3, s).option, std::vector<int>{0});
-  views[0].viewAngleDeg = 50;  // A 0.0225 + 0.0471 - 0.01 = 0.0596, B 0.0324 + 0
+  views[0].viewAngleDeg = 50;  // A 0.0225 + 0.0475 - 0.01 = 0.06, B 0.0324 + 0
   EXPECT_EQ(choosePlan(t, costs, 0.0, views, kScreenPx, 1e3, s).option, std::vector<int>{1});
 }
 

@@ -71,8 +71,9 @@ TEST(QualityTable, ReadsErrorsPerViewClassAndCostPriors) {
   EXPECT_EQ(table->options[std::size_t(wrap)].relRms, l.relRms);
 }
 
-TEST(QualityTable, ReadsEachFramesViewAngleAndFillsTheObliqueFrameBetweenRestAndGrazing) {
-  // An atlas with the frames' angles (truth.frames[].view_angle_deg), and without an oblique frame.
+TEST(QualityTable, ReadsEachFramesViewAngleAndFillsTheObliqueAndLowFramesBetweenRestAndGrazing) {
+  // An atlas with the frames' angles (truth.frames[].view_angle_deg), and without the oblique and
+  // low frames.
   const char* atlas = R"({
     "truth": {"frames": [{"frame": "rest", "organ_pixels": 1000, "view_angle_deg": 24.7},
                          {"frame": "grazing", "organ_pixels": 600, "view_angle_deg": 79.8},
@@ -91,6 +92,9 @@ TEST(QualityTable, ReadsEachFramesViewAngleAndFillsTheObliqueFrameBetweenRestAnd
   const QualityOption& l = table->options[std::size_t(table->find("lit", "default"))];
   EXPECT_NEAR(l.relRms[std::size_t(ViewClass::Oblique)], 0.3, 1e-12);
   EXPECT_NEAR(l.squaredStderr[std::size_t(ViewClass::Oblique)], 0.002, 1e-12);
+  EXPECT_TRUE(std::isnan(table->viewAngleDeg[std::size_t(ViewClass::Low)]));
+  EXPECT_NEAR(l.relRms[std::size_t(ViewClass::Low)], 0.35, 1e-12);  // between oblique and grazing
+  EXPECT_NEAR(l.squaredStderr[std::size_t(ViewClass::Low)], 0.0025, 1e-12);
   // The other missing classes keep the mean of the frames there are.
   EXPECT_NEAR(l.relRms[std::size_t(ViewClass::CloseUp)], 0.3, 1e-12);
   // An atlas without angles: none known.
@@ -173,6 +177,26 @@ TEST(QualityTable, NoOptionIsPricedBelowPlainLit) {
   EXPECT_GT(w.msPerPx, 0.0);
 }
 
+// Plain lit's own times fall with the pixels (timing noise): its per-pixel cost is the least one
+// the atlas resolved (the ray march's 1 ms per 1000 px here), through lit's centroid, not 0.
+TEST(QualityTable, AnUnresolvedLitSlopeTakesTheLeastResolvedOne) {
+  const std::string atlas = R"({"truth": {"frames": [{"frame": "rest", "organ_pixels": 1000},
+                                  {"frame": "close-up", "organ_pixels": 5000}]},
+             "results": [
+      {"method": "lit", "setting": "default", "frame": "rest", "ms": 7.0, "rel_rms": 0.5},
+      {"method": "lit", "setting": "default", "frame": "close-up", "ms": 5.0, "rel_rms": 0.7},
+      {"method": "ray-march", "setting": "10", "frame": "rest", "ms": 9.0, "rel_rms": 0.3},
+      {"method": "ray-march", "setting": "10", "frame": "close-up", "ms": 13.0, "rel_rms": 0.3},
+      {"method": "ray-march", "setting": "50", "frame": "rest", "ms": 10.0, "rel_rms": 0.3},
+      {"method": "ray-march", "setting": "50", "frame": "close-up", "ms": 30.0, "rel_rms": 0.3}]})";
+  auto table = qualityTableFromAtlasJson(atlas);
+  ASSERT_TRUE(table) << table.error().message;
+  const QualityOption& l = table->options[std::size_t(table->find("lit", "default"))];
+  EXPECT_DOUBLE_EQ(l.msPerPx, 1e-3);
+  EXPECT_DOUBLE_EQ(l.fixedMs, 0.0);
+  EXPECT_NEAR(table->frameOverheadMs, 6.0 - 1e-3 * 3000.0, 1e-9);  // lit's centroid: 3000 px, 6 ms
+}
+
 TEST(QualityTable, RefusesAJsonWithoutResults) {
   auto table = qualityTableFromAtlasJson(R"({"truth": {}})");
   ASSERT_FALSE(table);
@@ -198,13 +222,16 @@ TEST(QualityTable, CommittedDefaultHasEveryMethodAndPositiveCosts) {
   EXPECT_GT(dearestMs, litMs);              // the atlas's costs differ: some method costs more than lit
   for (const QualityOption& o : t.options)  // and none less (NoOptionIsPricedBelowPlainLit)
     EXPECT_GE(o.fixedMs + o.msPerPx * 2000.0, litMs) << o.method << " " << o.setting;
-  // The angle frames: rest, oblique and grazing in that order of view angle (the controller's
-  // error follows the angle between them).
+  // The angle frames: rest, oblique, low and grazing in that order of view angle (the
+  // controller's error follows the angle between them); the close-up is the oblique view's.
   const double rest = t.viewAngleDeg[std::size_t(ViewClass::Rest)];
   const double oblique = t.viewAngleDeg[std::size_t(ViewClass::Oblique)];
+  const double low = t.viewAngleDeg[std::size_t(ViewClass::Low)];
   const double grazing = t.viewAngleDeg[std::size_t(ViewClass::Grazing)];
   EXPECT_LT(rest, oblique);
-  EXPECT_LT(oblique, grazing);
+  EXPECT_LT(oblique, low);
+  EXPECT_LT(low, grazing);
+  EXPECT_NEAR(t.viewAngleDeg[std::size_t(ViewClass::CloseUp)], oblique, 5.0);
   EXPECT_GT(grazing, 70.0);
 }
 

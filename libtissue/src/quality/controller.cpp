@@ -124,6 +124,7 @@ ViewClass viewClassOf(const ObjectView& v, double screenPx, const ControllerSett
     return ViewClass::CloseUp;
   if (v.viewAngleDeg >= s.grazingDeg) return ViewClass::Grazing;
   if (v.deforming) return ViewClass::Deforming;
+  if (v.viewAngleDeg >= s.lowDeg) return ViewClass::Low;
   if (v.viewAngleDeg >= s.obliqueDeg) return ViewClass::Oblique;
   return ViewClass::Rest;
 }
@@ -137,17 +138,17 @@ double chargedOnFrame(const QualityOption& option, std::size_t v, const Controll
 }
 
 // The option's charged squared error along the view angle: piecewise linear between the atlas's
-// frames of one distance that differ in angle (rest, oblique, grazing), constant beyond the ends;
+// frames of one distance that differ in angle (rest, oblique, low, grazing), constant beyond the ends;
 // none (nan) where the table has fewer than two of them with an angle.
 double alongAngle(const QualityTable& table, const QualityOption& option, double angleDeg,
                   const ControllerSettings& s) {
-  std::array<std::pair<double, double>, 3> curve{};  // (angle, charged e^2); no allocation per call
+  std::array<std::pair<double, double>, 4> curve{};  // (angle, charged e^2); no allocation per call
   std::size_t n = 0;
-  for (ViewClass c : {ViewClass::Rest, ViewClass::Oblique, ViewClass::Grazing})
+  for (ViewClass c : {ViewClass::Rest, ViewClass::Oblique, ViewClass::Low, ViewClass::Grazing})
     if (const double a = table.viewAngleDeg[std::size_t(c)]; std::isfinite(a))
       curve[n++] = {a, chargedOnFrame(option, std::size_t(c), s)};
   if (n < 2) return std::nan("");
-  for (std::size_t i = 1; i < n; ++i)  // by angle (insertion: three at most)
+  for (std::size_t i = 1; i < n; ++i)  // by angle (insertion: four at most)
     for (std::size_t j = i; j > 0 && curve[j].first < curve[j - 1].first; --j)
       std::swap(curve[j], curve[j - 1]);
   if (angleDeg <= curve[0].first) return curve[0].second;

@@ -47,6 +47,8 @@ std::string_view viewClassFrame(ViewClass view) {
       return "grazing";
     case ViewClass::Oblique:
       return "oblique";
+    case ViewClass::Low:
+      return "low";
   }
   return "rest";
 }
@@ -147,6 +149,28 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
   std::map<std::pair<std::string, std::string>, std::pair<double, double>> lines;
   for (const auto& id : order)
     lines[id] = fitLine(classSamples[costClassKey(id.first, id.second)]);
+  // Plain lit's per-pixel cost unresolved (the atlas's timing noise at its pixel counts is larger:
+  // the sixteenth session's atlas fitted a negative slope): the least slope the atlas did resolve,
+  // through the lit samples' centroid. An upper bound, since every method shades each pixel at
+  // least as lit does, and a prior the controller's measured ratio corrects; a zero prior would
+  // price lit free for good (no ratio scales 0).
+  if (const auto plain = lines.find(plainLit); plain != lines.end() && plain->second.second <= 0.0) {
+    double least = 0.0;
+    for (const auto& [id, line] : lines)
+      if (id.first != "lit" && line.second > 0.0 && (least == 0.0 || line.second < least))
+        least = line.second;
+    const auto& samples = classSamples[costClassKey(plainLit.first, plainLit.second)];
+    if (least > 0.0 && !samples.empty()) {
+      double meanPx = 0.0, meanMs = 0.0;
+      for (const auto& [px, ms] : samples) {
+        meanPx += px / double(samples.size());
+        meanMs += ms / double(samples.size());
+      }
+      for (auto& [id, line] : lines)
+        if (costClassKey(id.first, id.second) == costClassKey(plainLit.first, plainLit.second))
+          line = {meanMs - least * meanPx, least};
+    }
+  }
   // The plain lit row's intercept (an atlas that scores the wrap term has two lit rows; without a
   // default one, the lowest lit intercept).
   if (const auto plain = lines.find(plainLit); plain != lines.end()) {
@@ -178,12 +202,18 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
       o.relRms[v] = a.has[v] ? a.err[v] : sum / n;
       o.squaredStderr[v] = a.has[v] ? a.squaredStderr[v] : sumStderr / n;
     }
-    // An atlas without the oblique frame: the angle between rest and grazing.
+    // An atlas without the oblique or low frame: the angle between its neighbours (rest and
+    // grazing; oblique and grazing, the oblique frame's filled where it has none).
     const auto rest = std::size_t(ViewClass::Rest), grazing = std::size_t(ViewClass::Grazing),
-               oblique = std::size_t(ViewClass::Oblique);
-    if (!a.has[oblique] && a.has[rest] && a.has[grazing]) {
+               oblique = std::size_t(ViewClass::Oblique), low = std::size_t(ViewClass::Low);
+    const bool hasOblique = a.has[oblique] || (a.has[rest] && a.has[grazing]);
+    if (!a.has[oblique] && hasOblique) {
       o.relRms[oblique] = 0.5 * (a.err[rest] + a.err[grazing]);
       o.squaredStderr[oblique] = 0.5 * (a.squaredStderr[rest] + a.squaredStderr[grazing]);
+    }
+    if (!a.has[low] && hasOblique && a.has[grazing]) {
+      o.relRms[low] = 0.5 * (o.relRms[oblique] + a.err[grazing]);
+      o.squaredStderr[low] = 0.5 * (o.squaredStderr[oblique] + a.squaredStderr[grazing]);
     }
     o.fixedMs = std::max(0.0, lines[id].first - table.frameOverheadMs);
     o.msPerPx = lines[id].second;
@@ -195,8 +225,8 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
   }
   if (table.options.empty())
     return Error{
-        "quality table: the atlas JSON has no result on the rest, poked, close-up, oblique or grazing "
-        "frames"};
+        "quality table: the atlas JSON has no result on the rest, poked, close-up, oblique, low or "
+        "grazing frames"};
   // No option is cheaper than plain lit: every method rasterises and shades the organ's pixels at
   // least once. A noisy fit (the wrap row's slope came out negative, its mean below lit's
   // intercept) would otherwise price an option at 0 ms, and a free option is chosen everywhere.

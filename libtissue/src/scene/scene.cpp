@@ -149,7 +149,8 @@ struct Scene::Impl {
         o.optionNew = true;
       }
       budgetChoices.push_back({c.method, c.setting, views[i].footprintPx, c.predictedMs, c.expectedRelRms,
-                               std::string(quality::viewClassFrame(c.view)), c.fallback, c.mesh});
+                               std::string(quality::viewClassFrame(c.view)), views[i].viewAngleDeg,
+                               c.fallback, c.mesh});
     }
     return {};
   }

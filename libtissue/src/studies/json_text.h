@@ -22,9 +22,16 @@ inline std::string jsonText(const nlohmann::json& value) {
 
 /// What the quality controller chose for one organ (scene::BudgetChoice), as the reports write it.
 inline nlohmann::json budgetChoiceJson(const scene::BudgetChoice& c) {
-  return {{"method", c.method},      {"setting", c.setting},          {"footprint_px", c.footprintPx},
-          {"view", c.view},          {"predicted_ms", c.predictedMs}, {"fallback", c.fallback},
-          {"planes", c.mesh.planes}, {"tangents", c.mesh.tangents}};
+  return {{"method", c.method},
+          {"setting", c.setting},
+          {"footprint_px", c.footprintPx},
+          {"view", c.view},
+          {"view_angle_deg", c.viewAngleDeg},
+          {"predicted_ms", c.predictedMs},
+          {"expected_rel_rms", c.expectedRelRms},
+          {"fallback", c.fallback},
+          {"planes", c.mesh.planes},
+          {"tangents", c.mesh.tangents}};
 }
 
 }  // namespace tissue::studies::detail

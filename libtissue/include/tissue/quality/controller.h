@@ -42,10 +42,12 @@ struct ControllerSettings {
   double closeUpFraction = 0.25;   ///< of the screen's pixels covered: the close-up class
   double closeUpDistanceMm = 0.0;  ///< mm; nearer than this is close-up too (0: off)
   double grazingDeg = 72.0;        ///< degrees; a view angle above it is the grazing class
-  /// degrees; a view angle above it (below grazingDeg, not deforming) is the oblique class. The
-  /// class names the nearest atlas frame for reports; the error follows the angle itself
-  /// (expectedSquaredError), so this threshold moves no plan.
+  /// degrees; a view angle above it (below grazingDeg, not deforming) is the oblique class, above
+  /// lowDeg the low class (the atlas's frames at ~25, 45, 62 and 80 degrees; these are the
+  /// midpoints). The class names the nearest atlas frame for reports; the error follows the angle
+  /// itself (expectedSquaredError), so these thresholds move no plan.
   double obliqueDeg = 35.0;
+  double lowDeg = 54.0;    ///< degrees; see obliqueDeg
   double headroom = 0.05;  ///< plan to budget x (1 - headroom): measurement noise
   /// The frame time's tail the budget is for: plans are made for budget / (1 + z cv), cv the
   /// learned relative spread of measured frames about their prediction, so that the frames up to
@@ -86,7 +88,7 @@ ViewClass viewClassOf(const ObjectView& view, double screenPx, const ControllerS
 /// its standard errors (a pessimistic bound: an option whose lead the atlas's truth could not
 /// resolve does not win on its noise), moved along the view angle: plus the change of that
 /// charged error from the class frame's angle to the object's, read off the atlas's frames that
-/// differ in angle alone (rest, oblique, grazing; piecewise linear, constant beyond them). A
+/// differ in angle alone (rest, oblique, low, grazing; piecewise linear, constant beyond them). A
 /// close-up seen at 50 degrees thus pays what the oblique frame shows 50 degrees costs over the
 /// rest frame's 25. Without the frames' angles in the table (an older atlas), the class's error.
 /// Never below 0. Unitless (squared relative RMS).

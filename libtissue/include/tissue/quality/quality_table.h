@@ -21,9 +21,9 @@ namespace tissue::quality {
 
 /// The atlas frame an object's view resembles (studies/atlas.h frames; backlit is not used: the
 /// controller does not know where the lights are).
-enum class ViewClass { Rest, Deforming, CloseUp, Grazing, Oblique };
-inline constexpr std::size_t kViewClassCount = 5;
-/// The atlas frame's name: "rest", "poked", "close-up", "grazing", "oblique".
+enum class ViewClass { Rest, Deforming, CloseUp, Grazing, Oblique, Low };
+inline constexpr std::size_t kViewClassCount = 6;
+/// The atlas frame's name: "rest", "poked", "close-up", "grazing", "oblique", "low".
 std::string_view viewClassFrame(ViewClass view);
 /// The view class of an atlas frame's name; none for a frame the controller does not use (backlit).
 std::optional<ViewClass> viewClassOfFrame(std::string_view frame);
@@ -40,7 +40,7 @@ struct QualityOption {
   std::string setting;  ///< the atlas's setting name ("preintegrated-17", "6g-opt", "50", ...; "wrap")
   /// Expected relative RMS error against the truth per ViewClass (the atlas's debiased rel RMS
   /// when the JSON has it); a class the atlas lacks takes the mean of the others (oblique: of
-  /// rest and grazing where it has both, the angle between them).
+  /// rest and grazing where it has both, low: of oblique and grazing; the angles between them).
   std::array<double, kViewClassCount> relRms{};
   /// How well the atlas's truth resolved that error, per ViewClass: the standard error of the
   /// paired difference of squared rel RMS against the frame's best option (the atlas's
@@ -71,7 +71,8 @@ struct QualityTable {
   /// truth.frames[].view_angle_deg, as scene::organView measures it); nan where the atlas lacks
   /// the frame or its angle. The controller's error follows the angle between them
   /// (expectedSquaredError, controller.h).
-  std::array<double, kViewClassCount> viewAngleDeg{kNoAngle, kNoAngle, kNoAngle, kNoAngle, kNoAngle};
+  std::array<double, kViewClassCount> viewAngleDeg{kNoAngle, kNoAngle, kNoAngle,
+                                                   kNoAngle, kNoAngle, kNoAngle};
   /// The cost classes' keys (costClassKey), indexed by QualityOption::costClass.
   std::vector<std::string> costClasses;
   /// The option named (method, setting), or -1.

@@ -59,6 +59,7 @@ struct BudgetChoice {
   double predictedMs = 0.0;     ///< ms
   double expectedRelRms = 0.0;  ///< the table's error for its view class
   std::string view;             ///< the atlas frame its view resembles
+  double viewAngleDeg = 0.0;    ///< degrees between the view ray and the surface normal (90: edge-on)
   bool fallback = false;        ///< below the footprint threshold: the lit tier (wrap or plain)
   quality::MeshWork mesh;       ///< what its method needs of the mesh each frame
 };

@@ -100,7 +100,7 @@ std::vector<AtlasSetting> atlasSettings(bool quick);
 struct AtlasRow {
   std::string method;   ///< lit, separable, texture-space, ray-march, parallax
   std::string setting;  ///< e.g. "preintegrated-17", "6g-opt", "50", "adaptive"
-  std::string frame;    ///< rest, poked, close-up, oblique, grazing, backlit
+  std::string frame;    ///< rest, poked, close-up, oblique, low, grazing, backlit
   double ms = 0.0;      ///< ms, median whole-frame time (renderImage, read back)
   double relRms = 0.0;
   double psnrDb = 0.0;
