@@ -166,9 +166,8 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
         meanPx += px / double(samples.size());
         meanMs += ms / double(samples.size());
       }
-      for (auto& [id, line] : lines)
-        if (costClassKey(id.first, id.second) == costClassKey(plainLit.first, plainLit.second))
-          line = {meanMs - least * meanPx, least};
+      for (auto& [id, line] : lines)  // lit's rows share one cost class (costClassKey)
+        if (id.first == "lit") line = {meanMs - least * meanPx, least};
     }
   }
   // The plain lit row's intercept (an atlas that scores the wrap term has two lit rows; without a
