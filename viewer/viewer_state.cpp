@@ -144,7 +144,7 @@ Result<void> applyBudget(Viewer& v, int width, int height) {
   // The options' settings are built off the frame path; the controller chooses among the built.
   v.budgetOptions.offer(0, v.controller->table(), v.organ, v.textures, v.choices);
   v.budgetOptions.collect();
-  quality::ObjectView view = scene::organView(v.box, kIdentity4, v.scene.camera, width, height);
+  quality::ObjectView view = scene::organView(v.organ.mesh, v.box, kIdentity4, v.scene.camera, width, height);
   view.deforming = v.last.simulation.contacts > 0 || v.last.simulation.grasped > 0;
   view.hasNormalMap = v.normalMapping && bool(v.textures.normalMap);
   view.allowed = v.budgetOptions.ready(0);

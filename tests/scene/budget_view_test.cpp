@@ -46,6 +46,53 @@ TEST(BudgetView, FootprintFallsWithTheSquareOfTheDistanceAndVanishesOffScreen) {
   EXPECT_GT(organView(slab(), kIdentity4, side, 320, 240).viewAngleDeg, 89.0);
 }
 
+// A closed box of `size` mm about the origin, counter-clockwise outside (12 triangles).
+SurfaceMesh box(Float3 size) {
+  SurfaceMesh m;
+  for (int c = 0; c < 8; ++c)
+    m.positions.push_back(
+        {(c & 1 ? 0.5f : -0.5f) * size.x, (c & 2 ? 0.5f : -0.5f) * size.y, (c & 4 ? 0.5f : -0.5f) * size.z});
+  m.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                 {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  return m;
+}
+
+TEST(BudgetView, TheMeshFootprintIsTheProjectedAreaTheBoundsOverstate) {
+  render::Camera cam;
+  cam.eye = {0, 0, 0};
+  cam.target = {0, 0, -1};
+  cam.up = {0, 1, 0};
+  cam.verticalFovDeg = 45.0f;
+  const SurfaceMesh m = box({100.0f, 60.0f, 10.0f});
+  Bounds3 b;
+  for (const Float3& p : m.positions)
+    b.add(p);
+  // Face-on at 400 mm: the 100 x 60 mm face, (100 / (2 z tan(22.5) aspect)) x (60 / (2 z tan(22.5)))
+  // of the image (the box's depth adds nothing seen face-on but its perspective rim).
+  const double tanHalf = std::tan(22.5 * 3.14159265 / 180.0), aspect = 320.0 / 240.0;
+  const double face =
+      100.0 / (2.0 * 395.0 * tanHalf * aspect) * 60.0 / (2.0 * 395.0 * tanHalf) * 320.0 * 240.0;
+  const auto seen = organView(m, b, translation({0, 0, -400}), cam, 320, 240);
+  EXPECT_NEAR(seen.footprintPx, face, 0.03 * face);  // the near face at 395 mm
+  EXPECT_LE(seen.footprintPx,
+            organView(b, translation({0, 0, -400}), cam, 320, 240).footprintPx * 4.0 / 3.14159265 + 1e-6);
+  // A box turned 45 degrees about y shows two faces; the bounds' rectangle bounds it, and the
+  // angle and distance are the bounds' own.
+  const float c = std::cos(0.785398f), s = std::sin(0.785398f);
+  Mat4 turned = translation({0, 0, -600});
+  turned[0] = c, turned[2] = -s, turned[8] = s, turned[10] = c;
+  const auto oblique = organView(m, b, turned, cam, 320, 240);
+  const auto bounds = organView(b, turned, cam, 320, 240);
+  EXPECT_GT(oblique.footprintPx, 0.0);
+  EXPECT_LE(oblique.footprintPx, bounds.footprintPx * 4.0 / 3.14159265 + 1e-6);
+  EXPECT_EQ(oblique.distanceMm, bounds.distanceMm);
+  EXPECT_EQ(oblique.viewAngleDeg, bounds.viewAngleDeg);
+  // Off screen: nothing; an empty mesh: the bounds' estimate (the ellipse).
+  EXPECT_EQ(organView(m, b, translation({5000, 0, -400}), cam, 320, 240).footprintPx, 0.0);
+  EXPECT_EQ(organView(SurfaceMesh{}, b, translation({0, 0, -400}), cam, 320, 240).footprintPx,
+            organView(b, translation({0, 0, -400}), cam, 320, 240).footprintPx);
+}
+
 TEST(BudgetView, AtlasSettingNamesBecomeMethodChoices) {
   quality::QualityOption o;
   o.method = "separable";

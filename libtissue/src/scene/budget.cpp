@@ -48,6 +48,47 @@ quality::ObjectView organView(const Bounds3& b, const Mat4& model, const render:
   return v;
 }
 
+quality::ObjectView organView(const SurfaceMesh& mesh, const Bounds3& b, const Mat4& model,
+                              const render::Camera& camera, int width, int height) {
+  quality::ObjectView v = organView(b, model, camera, width, height);
+  const std::size_t n = mesh.triangles.size();
+  if (n == 0 || mesh.positions.empty() || v.footprintPx <= 0.0) return v;
+  const Float3 f = normalize(camera.target - camera.eye);
+  const Float3 r = normalize(cross(f, camera.up));
+  const Float3 u = cross(r, f);
+  const float tanHalf = std::tan(camera.verticalFovDeg * 3.14159265f / 360.0f);
+  const float aspect = float(width) / float(std::max(height, 1));
+  const std::size_t stride = (n + 1999) / 2000;
+  double front = 0.0, back = 0.0;  // in NDC units (the image is 2 x 2)
+  for (std::size_t t = 0; t < n; t += stride) {
+    std::array<Float2, 3> q{};
+    bool behind = false;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::uint32_t i = mesh.triangles[t][k];
+      if (i >= mesh.positions.size()) return v;  // a malformed mesh: the bounds' estimate
+      const Float3 d = transformPoint(model, mesh.positions[i]) - camera.eye;
+      const float z = dot(d, f);
+      if (z < camera.nearMm) {
+        behind = true;
+        break;
+      }
+      q[k] = {std::clamp(dot(d, r) / (z * tanHalf * aspect), -1.0f, 1.0f),
+              std::clamp(dot(d, u) / (z * tanHalf), -1.0f, 1.0f)};
+    }
+    if (behind) continue;
+    const double area = 0.5 * (double(q[1].x - q[0].x) * double(q[2].y - q[0].y) -
+                               double(q[2].x - q[0].x) * double(q[1].y - q[0].y));
+    (area > 0.0 ? front : back) += std::fabs(area);
+  }
+  // At most the bounds' rectangle (the ellipse's 4 / pi; a box through the near plane: the image),
+  // which bounds the layers a concave organ's triangles count twice.
+  const double image = double(width) * double(height);
+  const double rectangle = v.footprintPx >= image ? image : std::min(image, v.footprintPx * 4.0 / 3.14159265);
+  const double px = std::max(front, back) * double(stride) / 4.0 * image;
+  v.footprintPx = std::min(rectangle, px);
+  return v;
+}
+
 std::vector<int> offeredOptions(const quality::QualityTable& table, const OrganAssets& organ) {
   std::vector<int> out;
   const auto methods = offeredMethods(organ);

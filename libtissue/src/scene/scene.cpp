@@ -120,7 +120,8 @@ struct Scene::Impl {
     if (budgetMs <= 0.0) {
       if (controller)
         for (Organ& o : organs)
-          o.footprintPx = organView(o.assets.bounds, o.model, lastCamera, width, height).footprintPx;
+          o.footprintPx =
+              organView(o.assets.mesh, o.assets.bounds, o.model, lastCamera, width, height).footprintPx;
       return {};
     }
     if (auto offered = offerOptions(); !offered) return offered;
@@ -128,7 +129,7 @@ struct Scene::Impl {
     std::vector<quality::ObjectView> views;
     for (std::size_t i = 0; i < organs.size(); ++i) {
       Organ& o = organs[i];
-      quality::ObjectView v = organView(o.assets.bounds, o.model, lastCamera, width, height);
+      quality::ObjectView v = organView(o.assets.mesh, o.assets.bounds, o.model, lastCamera, width, height);
       o.footprintPx = v.footprintPx;
       v.deforming = o.moved;
       v.importance = o.importance;

@@ -17,6 +17,14 @@
 
 namespace tissue::studies::detail {
 
+/// The laparoscope's light: a shadowed point lamp at the light port beside the lens, `rightMm`,
+/// `upMm` and `forwardMm` from `camera`'s eye along its axes (mm). Laparoscopes carry their light
+/// down the scope, so every view a trainee sees is lit from about where it is seen from; the
+/// budget bench and the atlas's laparoscope frames share this lamp so that the table's errors are
+/// measured under the light they are used under.
+render::Light lightBesideLens(const render::Camera& camera, float rightMm = 70.0f, float upMm = 70.0f,
+                              float forwardMm = 20.0f);
+
 /// FNV-1a over the positions (mm), triangles, UVs, the material (layers, maps), the camera and
 /// lights of `frame`, the tracer's settings and the time budget.
 std::uint64_t truthKey(std::span<const Float3> positions, const SurfaceMesh& mesh,

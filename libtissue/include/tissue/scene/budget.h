@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "tissue/core/result.h"
+#include "tissue/core/surface_mesh.h"
 #include "tissue/core/vec_math.h"
 #include "tissue/quality/controller.h"
 #include "tissue/quality/quality_table.h"
@@ -27,6 +28,17 @@ namespace tissue::scene {
 /// view ray and its thinnest axis (degrees, 90: edge-on).
 quality::ObjectView organView(const Bounds3& objectBounds, const Mat4& model, const render::Camera& camera,
                               int width, int height);
+
+/// The same view with the footprint the pixels `mesh` (object space, mm, under `model`) covers:
+/// the projected area of its triangles facing one way (the larger of the two ways: a closed
+/// surface's front and back each cover its silhouette once, a sheet's one side does), each
+/// triangle's corners clamped to the image, and at most the bounds' rectangle. What the quality
+/// table's per-pixel costs and the atlas's `organ_pixels` count: the bounds' ellipse overstates a
+/// small organ's pixels by 2-4x and the close-up's (cut by the image's edges) by 1.5x, which
+/// misweighs objects against each other. At most ~2000 triangles are projected (every k-th, their
+/// area times k): a host's frame pays microseconds per organ.
+quality::ObjectView organView(const SurfaceMesh& mesh, const Bounds3& objectBounds, const Mat4& model,
+                              const render::Camera& camera, int width, int height);
 
 /// The options of `table` whose method `organ` offers (offeredMethods).
 std::vector<int> offeredOptions(const quality::QualityTable& table, const OrganAssets& organ);
