@@ -100,7 +100,7 @@ std::vector<AtlasSetting> atlasSettings(bool quick);
 struct AtlasRow {
   std::string method;   ///< lit, separable, texture-space, ray-march, parallax
   std::string setting;  ///< e.g. "preintegrated-17", "6g-opt", "50", "adaptive"
-  std::string frame;    ///< rest, poked, close-up, oblique, low, grazing, backlit
+  std::string frame;    ///< rest, poked, close-up, oblique, low, far, grazing, backlit
   double ms = 0.0;      ///< ms, median whole-frame time (renderImage, read back)
   double relRms = 0.0;
   double psnrDb = 0.0;
@@ -139,7 +139,7 @@ struct AtlasConfig {
   int frames = 3;                  ///< timed frames per setting (median)
   int truthSpp = 256;              ///< samples per pixel at most (quick: 64)
   double truthSeconds =
-      120.0;        ///< s per frame at most for the truth (quick: 5; close-up and backlit 3x, oblique 2x)
+      120.0;  ///< s per frame at most for the truth (quick: 5; close-up 6x, oblique and low 4x, backlit 3x)
   int threads = 0;  ///< truth threads; 0: all cores
   /// Score with the product's artist's terms, which the truth does not have: the ambient fill
   /// light and the normal maps of SceneSettings (`scene`). Off (the default), the scored frames
