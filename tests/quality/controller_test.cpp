@@ -595,6 +595,31 @@ TEST(QualityController, LearnedCostConvergesToTheMeasuredCost) {
   EXPECT_NEAR(fixed.predictMs(5000.0), 3.0, 0.15);
 }
 
+// A line fitted between two small objects (the fallback tier's far organs, 30 and 61 px) is
+// their timing noise as much as their cost: past the footprints it was measured at, the prior's
+// slope, not the fitted one (which priced lit at 50 ms on a 5000 px close-up on the budget bench,
+// run 62) nor the prior's scaled by the measured level (the small objects' per-object work over a
+// prior without it: 220 ms, run 63).
+TEST(QualityController, ALineLearnedOnSmallObjectsIsNotExtrapolatedToALargeOne) {
+  CostModel m = costModelOf(option("lit", "default", 0.1, 0.0, 5e-4));  // lit: no prior per object
+  const auto truth = [](double px) { return 1.2 + 5e-4 * px; };
+  for (int i = 0; i < 60; ++i) {
+    const double px = i % 2 ? 61.0 : 30.0;
+    observeCost(m, px, truth(px) * (i % 2 ? 1.1 : 0.9), 0.05);  // the larger one measured 20 % slower
+  }
+  EXPECT_GT(m.msPerPx, 0.005);                       // the fitted slope is the noise's: 10x the cost's
+  EXPECT_NEAR(m.predictMs(45.0), truth(45.0), 0.1);  // within the measured footprints, the fit
+  EXPECT_LT(m.fittedToPx, 100.0);                    // which reaches about as far as they do
+  EXPECT_NEAR(m.predictMs(5000.0), truth(5000.0), 0.25 * truth(5000.0));  // past them, the prior's slope
+  // Measured across the footprints it is used at, the fitted line holds everywhere it was measured.
+  CostModel wide = costModelOf(option("lit", "default", 0.1, 1.0, 5e-4));
+  for (int i = 0; i < 200; ++i) {
+    const double px = 30.0 + 25.0 * double(i % 200);
+    observeCost(wide, px, 0.5 + 2e-3 * px, 0.05);
+  }
+  EXPECT_NEAR(wide.predictMs(4000.0), 0.5 + 2e-3 * 4000.0, 0.05 * (0.5 + 2e-3 * 4000.0));
+}
+
 // A method's passes of no object (separable's screen-space blurs) are paid once per plan that
 // uses the method, whatever the number of its objects: the plan is the exact optimum of that
 // cost, checked against every assignment of options to objects.

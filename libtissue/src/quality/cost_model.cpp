@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace tissue::quality {
 double sampleWeight(int samples, double learningRate) {
@@ -28,6 +29,7 @@ void observeCost(CostModel& m, double px, double ms, double learningRate) {
   const double mx = m.wx / m.w, my = m.wy / m.w;
   const double var = m.wxx / m.w - mx * mx;
   const double cov = m.wxy / m.w - mx * my;
+  const double prior = m.priorFixedMs + m.priorMsPerPx * mx;
   if (m.samples >= 3 && var > (0.05 * mx) * (0.05 * mx) && var > 1e-12) {
     const double b = cov / var;
     if (b >= 0.0) {
@@ -37,11 +39,17 @@ void observeCost(CostModel& m, double px, double ms, double learningRate) {
         m.fixedMs = 0.0;
         m.msPerPx = m.wxy / std::max(m.wxx, 1e-30);
       }
+      // Past the measured footprints, the prior's slope. Not scaled by the measured level: that
+      // level is mostly the per-object work a small object pays (lit's prior, above the frame's
+      // overhead, has none), 60x its prior at 45 px, which says nothing of the cost per pixel.
+      m.fittedToPx = mx + 2.0 * std::sqrt(var);
+      m.beyondMsPerPx = std::min(m.msPerPx, m.priorMsPerPx);
       return;
     }
   }
   // The px hardly vary: the prior's shape, scaled to the measured level.
-  const double prior = m.priorFixedMs + m.priorMsPerPx * mx;
+  m.fittedToPx = std::numeric_limits<double>::infinity();
+  m.beyondMsPerPx = 0.0;
   if (prior > 1e-12) {
     const double k = my / prior;
     m.fixedMs = k * m.priorFixedMs;

@@ -4,7 +4,9 @@
 /// pass times, and the measured-over-prior ratios that calibrate options never measured. GL-free.
 /// Units: ms, px (pixels covered).
 
+#include <algorithm>
 #include <array>
+#include <limits>
 
 #include "tissue/quality/quality_table.h"
 
@@ -15,21 +17,32 @@ namespace tissue::quality {
 /// without bias).
 double sampleWeight(int samples, double learningRate);
 
-/// A learned cost: ms = fixedMs + msPerPx * px, with the EMA'd normal equations behind it.
+/// A learned cost: ms = fixedMs + msPerPx * px up to fittedToPx, and beyondMsPerPx per pixel past
+/// it, with the EMA'd normal equations behind it.
 struct CostModel {
   double fixedMs = 0.0;  ///< ms
   double msPerPx = 0.0;  ///< ms per covered pixel
+  /// px; the footprints the fitted line was measured over reach about this far (their mean plus
+  /// two standard deviations). A slope fitted between objects of 30 and 60 px is their timing
+  /// noise as much as their cost: extrapolated to a 5000 px close-up it priced lit at 50 ms (the
+  /// fallback tier's far organs were lit's only samples). Past it, the lesser of the fitted and
+  /// the prior's slope (beyondMsPerPx). Infinite while the line is the prior's shape.
+  double fittedToPx = std::numeric_limits<double>::infinity();
+  double beyondMsPerPx = 0.0;  ///< ms per covered pixel past fittedToPx
   // Exponentially weighted sums of 1, px, px^2, ms, px ms (the normal equations).
   double w = 0.0, wx = 0.0, wxx = 0.0, wy = 0.0, wxy = 0.0;
   double priorFixedMs = 0.0, priorMsPerPx = 0.0;  ///< the shape kept while px hardly varies
   int samples = 0;
-  double predictMs(double px) const { return fixedMs + msPerPx * px; }
+  double predictMs(double px) const {
+    return fixedMs + msPerPx * std::min(px, fittedToPx) + beyondMsPerPx * std::max(0.0, px - fittedToPx);
+  }
 };
 /// A cost model starting at the table's prior.
 CostModel costModelOf(const QualityOption& option);
 /// One measured sample: `ms` spent on an object of `px` covered pixels. The fit is the
-/// exponentially weighted least squares of (1, px) -> ms; while the samples' px hardly vary it
-/// keeps the prior's shape and scales it to the measured level.
+/// exponentially weighted least squares of (1, px) -> ms, over the footprints it was measured at
+/// (CostModel::fittedToPx); while the samples' px hardly vary it keeps the prior's shape and
+/// scales it to the measured level.
 void observeCost(CostModel& model, double px, double ms, double learningRate);
 
 /// Measured cost over the table's prior, one ratio per cost term: ms = f x (the prior's fixed
