@@ -7,27 +7,42 @@
 #include <cmath>
 
 namespace tissue::scene {
+namespace {
+
+// The camera's axes and the projection to the image's [-1, 1]^2, shared by both footprints.
+struct ViewBasis {
+  Float3 f, r, u;
+  float tanHalf, aspect;
+  ViewBasis(const render::Camera& camera, int width, int height)
+      : f(normalize(camera.target - camera.eye)),
+        r(normalize(cross(f, camera.up))),
+        u(cross(r, f)),
+        tanHalf(std::tan(camera.verticalFovDeg * 3.14159265f / 360.0f)),
+        aspect(float(width) / float(std::max(height, 1))) {}
+  float depth(Float3 d) const { return dot(d, f); }  // d: from the eye, mm
+  Float2 ndc(Float3 d, float z) const {
+    return {dot(d, r) / (z * tanHalf * aspect), dot(d, u) / (z * tanHalf)};
+  }
+};
+
+}  // namespace
 
 quality::ObjectView organView(const Bounds3& b, const Mat4& model, const render::Camera& camera, int width,
                               int height) {
   quality::ObjectView v;
-  const Float3 f = normalize(camera.target - camera.eye);
-  const Float3 r = normalize(cross(f, camera.up));
-  const Float3 u = cross(r, f);
-  const float tanHalf = std::tan(camera.verticalFovDeg * 3.14159265f / 360.0f);
-  const float aspect = float(width) / float(std::max(height, 1));
+  const ViewBasis view(camera, width, height);
   float x0 = 1e30f, x1 = -1e30f, y0 = 1e30f, y1 = -1e30f;
   bool throughNear = false;
   for (int c = 0; c < 8; ++c) {
     const Float3 p =
         transformPoint(model, {c & 1 ? b.hi.x : b.lo.x, c & 2 ? b.hi.y : b.lo.y, c & 4 ? b.hi.z : b.lo.z});
     const Float3 d = p - camera.eye;
-    const float z = dot(d, f);
+    const float z = view.depth(d);
     if (z < camera.nearMm) {
       throughNear = true;
       continue;
     }
-    const float sx = dot(d, r) / (z * tanHalf * aspect), sy = dot(d, u) / (z * tanHalf);
+    const auto [sx, sy] = view.ndc(d, z);
     x0 = std::min(x0, sx), x1 = std::max(x1, sx), y0 = std::min(y0, sy), y1 = std::max(y1, sy);
   }
   if (throughNear) x0 = y0 = -1.0f, x1 = y1 = 1.0f;  // the box reaches behind the near plane
@@ -53,11 +68,7 @@ quality::ObjectView organView(const SurfaceMesh& mesh, const Bounds3& b, const M
   quality::ObjectView v = organView(b, model, camera, width, height);
   const std::size_t n = mesh.triangles.size();
   if (n == 0 || mesh.positions.empty() || v.footprintPx <= 0.0) return v;
-  const Float3 f = normalize(camera.target - camera.eye);
-  const Float3 r = normalize(cross(f, camera.up));
-  const Float3 u = cross(r, f);
-  const float tanHalf = std::tan(camera.verticalFovDeg * 3.14159265f / 360.0f);
-  const float aspect = float(width) / float(std::max(height, 1));
+  const ViewBasis view(camera, width, height);
   const std::size_t stride = (n + 1999) / 2000;
   double front = 0.0, back = 0.0;  // in NDC units (the image is 2 x 2)
   for (std::size_t t = 0; t < n; t += stride) {
@@ -67,13 +78,13 @@ quality::ObjectView organView(const SurfaceMesh& mesh, const Bounds3& b, const M
       const std::uint32_t i = mesh.triangles[t][k];
       if (i >= mesh.positions.size()) return v;  // a malformed mesh: the bounds' estimate
       const Float3 d = transformPoint(model, mesh.positions[i]) - camera.eye;
-      const float z = dot(d, f);
+      const float z = view.depth(d);
       if (z < camera.nearMm) {
         behind = true;
         break;
       }
-      q[k] = {std::clamp(dot(d, r) / (z * tanHalf * aspect), -1.0f, 1.0f),
-              std::clamp(dot(d, u) / (z * tanHalf), -1.0f, 1.0f)};
+      const Float2 p = view.ndc(d, z);
+      q[k] = {std::clamp(p.x, -1.0f, 1.0f), std::clamp(p.y, -1.0f, 1.0f)};
     }
     if (behind) continue;
     const double area = 0.5 * (double(q[1].x - q[0].x) * double(q[2].y - q[0].y) -
