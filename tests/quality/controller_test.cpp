@@ -124,9 +124,17 @@ TEST(QualityController, MoreBudgetNeverGivesAHigherExpectedError) {
   }
 }
 
+// The fallback threshold of these two tests: the far object's 150 px below it (the default is a
+// 4 x 4 px speck, 16 px).
+ControllerSettings fallbackAt400Px() {
+  ControllerSettings s;
+  s.minFootprintPx = 400.0;
+  return s;
+}
+
 TEST(QualityController, TinyFootprintsFallBackToLitWithWrap) {
   const QualityTable t = table();
-  QualityController c(t);
+  QualityController c(t, fallbackAt400Px());
   const auto& choices = c.update(objects(), kScreenPx, 1000.0);  // budget for anything
   ASSERT_EQ(choices.size(), 5u);
   EXPECT_EQ(choices[4].method, "lit");
@@ -145,7 +153,7 @@ TEST(QualityController, TheFallbackTierTakesTheWrapTermOnlyWhereItHelps) {
   const int wrap = t.find("lit", "wrap"), plain = t.find("lit", "default");
   t.options[std::size_t(wrap)].relRms[std::size_t(ViewClass::Rest)] = 0.55;  // above lit's 0.50
   const std::vector<ObjectView> small(1, objects()[4]);                      // 150 px, at rest
-  QualityController c(t);
+  QualityController c(t, fallbackAt400Px());
   const auto& choices = c.update(small, kScreenPx, 1000.0);
   ASSERT_EQ(choices.size(), 1u);
   EXPECT_EQ(choices[0].option, plain);
@@ -153,12 +161,55 @@ TEST(QualityController, TheFallbackTierTakesTheWrapTermOnlyWhereItHelps) {
   // Grazing, the table's wrap stays below plain lit (0.48 x 1.2 against 0.50 x 1.2): the wrap term.
   std::vector<ObjectView> grazing = small;
   grazing[0].viewAngleDeg = 80.0;
-  QualityController g(t);
+  QualityController g(t, fallbackAt400Px());
   EXPECT_EQ(g.update(grazing, kScreenPx, 1000.0)[0].option, wrap);
   // Never anything but the lit tier below the threshold, however loose the budget (a budget
   // far above every cost coarsens the knapsack's grid instead of growing it).
   for (const ObjectChoice& ch : c.update(small, kScreenPx, 1e9))
     EXPECT_EQ(ch.method, "lit");
+}
+
+// The far frame (the low view from farther away) is the footprint axis: an object smaller than
+// the low frame's pays the error interpolated in ln px towards the far frame's, one at or below
+// the far frame's pays that; a large one the low frame's. The atlas's shape: lit ties the ray
+// march at the low frame's 750 px and loses at the far frame's 110.
+TEST(QualityController, AnObjectsErrorFollowsItsFootprintFromTheLowFrameToTheFarFrame) {
+  QualityTable t;
+  QualityOption lit = option("lit", "default", 0.087, 0.1, 1e-4);
+  QualityOption march = option("ray-march", "10", 0.088, 0.2, 2e-4);
+  const auto low = std::size_t(ViewClass::Low);
+  lit.relRms[low] = 0.087, march.relRms[low] = 0.088;
+  lit.farRelRms = 0.12, march.farRelRms = 0.097;
+  t.options = {lit, march};
+  t.framePx[low] = 750.0;
+  t.farFramePx = 110.0;
+  ControllerSettings s;
+  s.errorConfidence = 0.0;
+  ObjectView v;
+  v.viewAngleDeg = 62.0;
+  const auto err = [&](int o, double px) {
+    v.footprintPx = px;
+    return expectedSquaredError(t, o, v, ViewClass::Low, s);
+  };
+  // At and above the low frame's pixels, the low frame's errors: lit ahead.
+  EXPECT_NEAR(err(0, 750.0), 0.087 * 0.087, 1e-12);
+  EXPECT_NEAR(err(0, 5000.0), 0.087 * 0.087, 1e-12);
+  EXPECT_LT(err(0, 1000.0), err(1, 1000.0));
+  // At and below the far frame's, the far frame's: the ray march ahead.
+  EXPECT_NEAR(err(0, 110.0), 0.12 * 0.12, 1e-12);
+  EXPECT_NEAR(err(1, 40.0), 0.097 * 0.097, 1e-12);
+  EXPECT_LT(err(1, 40.0), err(0, 40.0));
+  // Between, linear in ln px.
+  const double f = std::log(300.0 / 110.0) / std::log(750.0 / 110.0);
+  EXPECT_NEAR(err(0, 300.0), 0.12 * 0.12 + f * (0.087 * 0.087 - 0.12 * 0.12), 1e-12);
+  // The plan follows: a 40 px object (above the 16 px fallback) on the ray march, a 1000 px one on lit.
+  std::vector<ObjectView> two(2, v);
+  two[0].footprintPx = 40.0, two[1].footprintPx = 1000.0;
+  const Plan p = choosePlan(t, priors(t), 0.0, two, kScreenPx, 100.0, s);
+  EXPECT_EQ(p.option, (std::vector<int>{1, 0}));
+  // A table without the far frame does not move along the footprint.
+  t.farFramePx = std::nan("");
+  EXPECT_NEAR(err(0, 40.0), 0.087 * 0.087, 1e-12);
 }
 
 // The atlas's truth is noisy: a lower mean error it did not resolve (a large standard error of

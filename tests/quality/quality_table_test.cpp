@@ -104,6 +104,37 @@ TEST(QualityTable, ReadsEachFramesViewAngleAndFillsTheObliqueAndLowFramesBetween
     EXPECT_TRUE(std::isnan(a));
 }
 
+// The far frame is no view class: its errors and pixels are the footprint axis beside the low
+// frame's (controller.h, expectedSquaredError); only where every option has it.
+TEST(QualityTable, ReadsTheFarFrameAsTheFootprintAxis) {
+  const std::string rows = R"(
+      {"method": "lit", "setting": "default", "frame": "low", "ms": 3.0, "rel_rms": 0.3},
+      {"method": "lit", "setting": "default", "frame": "far", "ms": 2.2, "rel_rms": 0.5,
+       "squared_vs_best_stderr": 0.004},
+      {"method": "ray-march", "setting": "10", "frame": "low", "ms": 5.0, "rel_rms": 0.31},
+      {"method": "ray-march", "setting": "10", "frame": "far", "ms": 2.5, "rel_rms": 0.4})";
+  const std::string frames = R"({"truth": {"frames": [{"frame": "low", "organ_pixels": 750},
+                                                      {"frame": "far", "organ_pixels": 110}]},
+                                 "results": [)";
+  auto table = qualityTableFromAtlasJson(frames + rows + "]}");
+  ASSERT_TRUE(table) << table.error().message;
+  EXPECT_DOUBLE_EQ(table->farFramePx, 110.0);
+  EXPECT_DOUBLE_EQ(table->framePx[std::size_t(ViewClass::Low)], 750.0);
+  const QualityOption& l = table->options[std::size_t(table->find("lit", "default"))];
+  EXPECT_DOUBLE_EQ(l.farRelRms, 0.5);
+  EXPECT_DOUBLE_EQ(l.farSquaredStderr, 0.004);
+  EXPECT_DOUBLE_EQ(l.relRms[std::size_t(ViewClass::Low)], 0.3);
+  // The far frame's error is in no class's mean (the classes the atlas lacks).
+  EXPECT_DOUBLE_EQ(l.relRms[std::size_t(ViewClass::Rest)], 0.3);
+  EXPECT_DOUBLE_EQ(table->options[std::size_t(table->find("lit", kWrapSetting))].farRelRms, 0.5);
+  // One option without the far frame: no footprint axis.
+  auto partial = qualityTableFromAtlasJson(
+      frames + rows.substr(0, rows.rfind("{")) +
+      R"({"method": "ray-march", "setting": "25", "frame": "low", "ms": 6.0, "rel_rms": 0.31}]})");
+  ASSERT_TRUE(partial) << partial.error().message;
+  EXPECT_TRUE(std::isnan(partial->farFramePx));
+}
+
 TEST(QualityTable, ReadsTheAtlasRowOfTheWrapTermAsItsOwn) {
   // An atlas that scored lit with the wrap term (tissue-sim atlas's "lit wrap" row): the option
   // takes that row's errors, not plain lit's. Its cost is the lit class's (costClassKey: one

@@ -23,7 +23,8 @@ Mat4 translation(Float3 t) {
 Scene threeLivers() {
   SceneSettings settings;
   settings.materials.textureRoots = {TISSUE_TEST_GENERATED_DATA_DIR, TISSUE_TEST_DATA_DIR};
-  settings.renderer.finishPasses = true;  // llvmpipe: the pass times are what the controller learns
+  settings.renderer.finishPasses = true;    // llvmpipe: the pass times are what the controller learns
+  settings.quality.minFootprintPx = 400.0;  // the far liver (6 m away) below it
   auto scene = Scene::create({}, settings);
   EXPECT_TRUE(scene.ok()) << (scene ? "" : scene.error().message);
   for (float z : {0.0f, -600.0f, -6000.0f}) {

@@ -162,18 +162,44 @@ double alongAngle(const QualityTable& table, const QualityOption& option, double
   return curve[n - 1].second;
 }
 
+// The option's charged squared error along the footprint at the low frame's angle: linear in
+// ln px between the far frame (the low view from 2.5x the distance) and the low frame, constant
+// beyond them; nan where the table lacks either. An object of fewer pixels is more of its
+// silhouette and its shading's angular shape, where the methods part most (the far frame's
+// lit 0.1185 against the ray march's 0.097, debiased; at the low frame 0.087 against 0.086).
+double alongFootprint(const QualityTable& table, const QualityOption& option, double px,
+                      const ControllerSettings& s) {
+  const auto low = std::size_t(ViewClass::Low);
+  const double pxFar = table.farFramePx, pxLow = table.framePx[low];
+  if (!(pxFar > 0.0) || !(pxLow > pxFar) || !std::isfinite(option.farRelRms)) return std::nan("");
+  const double eFar =
+      option.farRelRms * option.farRelRms + std::max(0.0, s.errorConfidence) * option.farSquaredStderr;
+  const double eLow = chargedOnFrame(option, low, s);
+  if (!(px > pxFar)) return eFar;
+  if (px >= pxLow) return eLow;
+  const double t = std::log(px / pxFar) / std::log(pxLow / pxFar);
+  return eFar + t * (eLow - eFar);
+}
+
 }  // namespace
 
 double expectedSquaredError(const QualityTable& table, int option, const ObjectView& view, ViewClass cls,
                             const ControllerSettings& s) {
   const QualityOption& o = table.options[std::size_t(option)];
-  const double own = chargedOnFrame(o, std::size_t(cls), s);
-  const double frameAngle = table.viewAngleDeg[std::size_t(cls)];
-  if (!std::isfinite(frameAngle)) return own;
-  const double here = alongAngle(table, o, view.viewAngleDeg, s);
-  const double there = alongAngle(table, o, frameAngle, s);
-  if (!std::isfinite(here) || !std::isfinite(there)) return own;
-  return std::max(0.0, own + (here - there));
+  double e = chargedOnFrame(o, std::size_t(cls), s);
+  // Moved along the angle from the class frame's to the object's.
+  if (const double frameAngle = table.viewAngleDeg[std::size_t(cls)]; std::isfinite(frameAngle)) {
+    const double here = alongAngle(table, o, view.viewAngleDeg, s);
+    const double there = alongAngle(table, o, frameAngle, s);
+    if (std::isfinite(here) && std::isfinite(there)) e += here - there;
+  }
+  // And along the footprint from the class frame's pixels to the object's.
+  if (const double framePx = table.framePx[std::size_t(cls)]; std::isfinite(framePx)) {
+    const double here = alongFootprint(table, o, view.footprintPx, s);
+    const double there = alongFootprint(table, o, framePx, s);
+    if (std::isfinite(here) && std::isfinite(there)) e += here - there;
+  }
+  return std::max(0.0, e);
 }
 
 namespace {

@@ -105,6 +105,7 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
   struct Acc {
     std::array<double, kViewClassCount> err{}, squaredStderr{};
     std::array<bool, kViewClassCount> has{};
+    double farErr = std::nan(""), farSquaredStderr = 0.0;
     std::vector<std::pair<double, double>> pxMs;
   };
   std::vector<std::pair<std::string, std::string>> order;
@@ -120,15 +121,23 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
     const double ms = row["ms"].get<double>();
     if (pixelsOf.count(frame) && std::isfinite(ms)) a.pxMs.push_back({pixelsOf[frame], ms});
     const std::optional<ViewClass> view = viewClassOfFrame(frame);
-    if (!view) continue;
-    const auto v = std::size_t(*view);
+    if (!view && frame != kFarFrame) continue;
     double e = row["rel_rms"].is_number() ? row["rel_rms"].get<double>() : std::nan("");
     if (settings.debiased && row.contains("rel_rms_debiased") && row["rel_rms_debiased"].is_number())
       e = row["rel_rms_debiased"].get<double>();
     if (!std::isfinite(e)) continue;
+    const double stderrOfRow =
+        row.contains("squared_vs_best_stderr") && row["squared_vs_best_stderr"].is_number()
+            ? std::max(0.0, row["squared_vs_best_stderr"].get<double>())
+            : 0.0;
+    if (!view) {  // the far frame: the footprint axis, not a class
+      a.farErr = e;
+      a.farSquaredStderr = stderrOfRow;
+      continue;
+    }
+    const auto v = std::size_t(*view);
     a.err[v] = e;
-    if (row.contains("squared_vs_best_stderr") && row["squared_vs_best_stderr"].is_number())
-      a.squaredStderr[v] = std::max(0.0, row["squared_vs_best_stderr"].get<double>());
+    a.squaredStderr[v] = stderrOfRow;
     a.has[v] = true;
   }
   QualityTable table;
@@ -214,6 +223,8 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
       o.relRms[low] = 0.5 * (o.relRms[oblique] + a.err[grazing]);
       o.squaredStderr[low] = 0.5 * (o.squaredStderr[oblique] + a.squaredStderr[grazing]);
     }
+    o.farRelRms = a.farErr;
+    o.farSquaredStderr = a.farSquaredStderr;
     o.fixedMs = std::max(0.0, lines[id].first - table.frameOverheadMs);
     o.msPerPx = lines[id].second;
     const std::string key = costClassKey(o.method, o.setting);
@@ -245,6 +256,15 @@ Result<QualityTable> tableFromAtlasJsonUnguarded(std::string_view jsonText, cons
     }
   }
   table.viewAngleDeg = angles;
+  for (std::size_t v = 0; v < kViewClassCount; ++v)
+    if (const auto px = pixelsOf.find(std::string(viewClassFrame(ViewClass(v)))); px != pixelsOf.end())
+      table.framePx[v] = px->second;
+  // The far frame counts only where every option has it (a partial row would compare options on
+  // different axes).
+  const bool farForAll = pixelsOf.count(std::string(kFarFrame)) &&
+                         std::all_of(table.options.begin(), table.options.end(),
+                                     [](const QualityOption& o) { return std::isfinite(o.farRelRms); });
+  if (farForAll) table.farFramePx = pixelsOf[std::string(kFarFrame)];
   table.source = "atlas JSON";
   return table;
 }

@@ -81,6 +81,23 @@ double percentile(std::vector<double> v, double q) {
   return v[std::min(i, v.size() - 1)];
 }
 
+// The controller's planning costs on the organs' last footprints (BudgetRun::learnedCosts).
+void learnedCosts(const quality::QualityController& q, BudgetRun& r) {
+  const std::vector<quality::CostModel> costs = q.planningCosts();
+  const std::vector<double> pass = q.planningPassMs();
+  for (std::size_t o = 0; o < costs.size(); ++o) {
+    LearnedOptionCost c{q.table().options[o].method,
+                        q.table().options[o].setting,
+                        q.costs()[o].samples,
+                        {},
+                        o < pass.size() ? pass[o] : 0.0};
+    for (const scene::BudgetChoice& organ : r.choices)
+      c.organMs.push_back(costs[o].predictMs(organ.footprintPx));
+    r.learnedCosts.push_back(std::move(c));
+  }
+  r.learnedOverheadMs = q.overheadMs();
+}
+
 struct Bench {
   const BudgetBenchConfig& config;
   scene::Scene scene;
@@ -150,6 +167,7 @@ struct Bench {
       r.switchesDeferred = scene.qualityController()->switchesDeferred() - deferredBefore;
       r.plannedForMs = scene.qualityController()->planningBudgetMs(scene.budgetMs());
       r.predictedMs = scene.qualityController()->plan().predictedMs;
+      learnedCosts(*scene.qualityController(), r);
     }
     return r;
   }
@@ -200,6 +218,13 @@ std::string jsonOf(const BudgetBenchResult& b, const BudgetBenchConfig& config) 
       choice["organ"] = i < names.size() ? names[i].name : "";
       choices.push_back(std::move(choice));
     }
+    nlohmann::json learned = nlohmann::json::array();
+    for (const LearnedOptionCost& l : c.learnedCosts)
+      learned.push_back({{"method", l.method},
+                         {"setting", l.setting},
+                         {"samples", l.samples},
+                         {"organ_ms", l.organMs},
+                         {"pass_ms", l.passMs}});
     runs.push_back({{"budget_ms", c.budgetMs},
                     {"plan_changes", c.planChanges},
                     {"switches_deferred", c.switchesDeferred},
@@ -211,7 +236,9 @@ std::string jsonOf(const BudgetBenchResult& b, const BudgetBenchConfig& config) 
                     {"organ_rel_rms", c.organRelRms},
                     {"organ_gain", c.organGain},
                     {"organ_shape_rel_rms", c.organShapeRelRms},
-                    {"choices", choices}});
+                    {"choices", choices},
+                    {"learned_overhead_ms", c.learnedOverheadMs},
+                    {"learned_costs", learned}});
   }
   const nlohmann::json json = {{"width", config.width},
                                {"height", config.height},

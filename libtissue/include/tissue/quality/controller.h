@@ -36,9 +36,12 @@ struct ObjectView {
 
 /// The controller's settings (plain struct with defaults).
 struct ControllerSettings {
-  /// px; below (about 20 x 20 pixels): the fallback tier, lit with its wrap term or plain lit,
-  /// whichever the table's error for the view prefers
-  double minFootprintPx = 400.0;
+  /// px; below (a 4 x 4 pixel speck): the fallback tier, lit with its wrap term or plain lit,
+  /// whichever the table's error for the view prefers. Not 400 (20 x 20): the atlas's far frame
+  /// (109 px) and the budget bench's far organs (30, 47 px) show lit the worst there, at a cost
+  /// within 0.1 ms of the ray march's on objects that small (docs/DECISIONS.md, eighteenth
+  /// session).
+  double minFootprintPx = 16.0;
   double closeUpFraction = 0.25;   ///< of the screen's pixels covered: the close-up class
   double closeUpDistanceMm = 0.0;  ///< mm; nearer than this is close-up too (0: off)
   double grazingDeg = 72.0;        ///< degrees; a view angle above it is the grazing class
@@ -91,7 +94,10 @@ ViewClass viewClassOf(const ObjectView& view, double screenPx, const ControllerS
 /// differ in angle alone (rest, oblique, low, grazing; piecewise linear, constant beyond them). A
 /// close-up seen at 50 degrees thus pays what the oblique frame shows 50 degrees costs over the
 /// rest frame's 25. Without the frames' angles in the table (an older atlas), the class's error.
-/// Never below 0. Unitless (squared relative RMS).
+/// Then moved along the footprint: plus the change of the charged error from the class frame's
+/// pixels to the object's, read off the low and far frames (one view from two distances; linear
+/// in ln px, constant beyond them): an object of 50 px pays what the far frame shows. Without the
+/// far frame (an older atlas), no such move. Never below 0. Unitless (squared relative RMS).
 double expectedSquaredError(const QualityTable& table, int option, const ObjectView& view, ViewClass cls,
                             const ControllerSettings& settings = {});
 

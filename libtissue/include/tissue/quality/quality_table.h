@@ -28,6 +28,9 @@ std::string_view viewClassFrame(ViewClass view);
 /// The view class of an atlas frame's name; none for a frame the controller does not use (backlit).
 std::optional<ViewClass> viewClassOfFrame(std::string_view frame);
 
+/// The atlas frame that is the low frame's view from farther away (QualityOption::farRelRms).
+inline constexpr std::string_view kFarFrame = "far";
+
 /// No view angle known (QualityTable::viewAngleDeg).
 inline constexpr double kNoAngle = std::numeric_limits<double>::quiet_NaN();
 
@@ -47,6 +50,12 @@ struct QualityOption {
   /// `squared_vs_best_stderr`; studies::errorDifference). 0 where the JSON lacks it (and for the
   /// frame's best). Unitless (squared rel RMS).
   std::array<double, kViewClassCount> squaredStderr{};
+  /// The atlas's far frame (the low frame's view from 2.5x the distance, ~100 organ pixels):
+  /// the expected rel RMS and its standard error as the low frame's. Not a view class: it is the
+  /// footprint axis at the low frame's angle (QualityTable::farFramePx, expectedSquaredError in
+  /// controller.h). nan where the atlas lacks the frame.
+  double farRelRms = std::numeric_limits<double>::quiet_NaN();
+  double farSquaredStderr = 0.0;
   double fixedMs = 0.0;  ///< ms, the cost prior's part per object
   double msPerPx = 0.0;  ///< ms per covered pixel, the cost prior's part per pixel
   /// The options that run the same passes with other constants share one cost (costClassKey):
@@ -73,6 +82,11 @@ struct QualityTable {
   /// (expectedSquaredError, controller.h).
   std::array<double, kViewClassCount> viewAngleDeg{kNoAngle, kNoAngle, kNoAngle,
                                                    kNoAngle, kNoAngle, kNoAngle};
+  /// px, per ViewClass: the organ pixels of its atlas frame (truth.frames[].organ_pixels); nan
+  /// where unknown. With farFramePx, the footprint axis of the controller's error.
+  std::array<double, kViewClassCount> framePx{kNoAngle, kNoAngle, kNoAngle, kNoAngle, kNoAngle, kNoAngle};
+  /// px, the far frame's organ pixels (QualityOption::farRelRms); nan where the atlas lacks it.
+  double farFramePx = std::numeric_limits<double>::quiet_NaN();
   /// The cost classes' keys (costClassKey), indexed by QualityOption::costClass.
   std::vector<std::string> costClasses;
   /// The option named (method, setting), or -1.

@@ -49,6 +49,16 @@ struct BudgetBenchConfig {
   std::function<void(const std::string&)> onProgress;  ///< one line per step; empty: none
 };
 
+/// What the controller believed one table option costs at the end of a budget run: the cost it
+/// plans with (QualityController::planningCosts, learned or calibrated from the prior) on each
+/// organ's footprint, and its method's passes of no object.
+struct LearnedOptionCost {
+  std::string method, setting;
+  int samples = 0;              ///< steady samples learned for the option itself
+  std::vector<double> organMs;  ///< ms, per organ (placements' order) at its last footprint
+  double passMs = 0.0;          ///< ms, its method's passes of no object, once a frame
+};
+
 /// One run: a budget with the controller, or a fixed setting.
 struct BudgetRun {
   double budgetMs = 0.0;                         ///< 0 for a fixed setting
@@ -69,6 +79,8 @@ struct BudgetRun {
   std::vector<double> organGain, organShapeRelRms;
   double interiorRelRms = 0.0;           ///< rel RMS over pixels off every silhouette (BudgetBenchResult)
   double gain = 0.0, shapeRelRms = 0.0;  ///< AtlasScore's: the overall level, the error once matched
+  std::vector<LearnedOptionCost> learnedCosts;  ///< the controller's, at the last frame (budget runs)
+  double learnedOverheadMs = 0.0;               ///< ms, the controller's frame overhead at the last frame
   bool tooSlow = false;  ///< a fixed setting stopped at a frame over maxFixedFrameMs (not scored)
 };
 
