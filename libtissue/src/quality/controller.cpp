@@ -427,13 +427,13 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
   const std::vector<CostModel> costs = planningCosts();
   const std::vector<double> passMs = planningPassMs();
   // A new set of objects: the held plan was made for something else. A new budget (one that
-  // differs from the held plan's by more than the gain margin): the plan is searched again at
+  // differs from the held plan's by more than newBudgetFraction): the plan is searched again at
   // once and taken for any gain, but a held plan that fits it is left only where the switch
   // frame fits too (a host's new budget is no reason to break it once). A budget nudged by less
   // (a host setting it each frame from a measured refresh) is the same budget: the held plan's
   // hysteresis stands.
   bool replace = m_plan.option.size() != objects.size();
-  const bool newBudget = !(std::abs(budgetMs - m_budgetMs) <= s.gainMargin * m_budgetMs);
+  const bool newBudget = !(std::abs(budgetMs - m_budgetMs) <= s.newBudgetFraction * m_budgetMs);
   if (newBudget || replace) m_budgetMs = budgetMs;
   if (!replace) {
     // The held plan must still be allowed for each object (a footprint below the threshold

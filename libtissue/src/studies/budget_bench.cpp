@@ -85,14 +85,24 @@ double percentile(std::vector<double> v, double q) {
 void learnedCosts(const quality::QualityController& q, BudgetRun& r) {
   const std::vector<quality::CostModel> costs = q.planningCosts();
   const std::vector<double> pass = q.planningPassMs();
+  quality::ControllerSettings uncharged = q.settings();  // the expected error as reported: no charge
+  uncharged.errorConfidence = 0.0;
   for (std::size_t o = 0; o < costs.size(); ++o) {
-    LearnedOptionCost c{q.table().options[o].method,
-                        q.table().options[o].setting,
-                        q.costs()[o].samples,
-                        {},
-                        o < pass.size() ? pass[o] : 0.0};
-    for (const scene::BudgetChoice& organ : r.choices)
+    LearnedOptionCost c;
+    c.method = q.table().options[o].method;
+    c.setting = q.table().options[o].setting;
+    c.samples = q.costs()[o].samples;
+    c.passMs = o < pass.size() ? pass[o] : 0.0;
+    for (const scene::BudgetChoice& organ : r.choices) {
       c.organMs.push_back(costs[o].predictMs(organ.footprintPx));
+      quality::ObjectView view;
+      view.footprintPx = organ.footprintPx;
+      view.viewAngleDeg = organ.viewAngleDeg;
+      const auto cls = quality::viewClassOfFrame(organ.view);
+      c.organExpectedRelRms.push_back(
+          cls ? std::sqrt(quality::expectedSquaredError(q.table(), int(o), view, *cls, uncharged))
+              : std::nan(""));
+    }
     r.learnedCosts.push_back(std::move(c));
   }
   r.learnedOverheadMs = q.overheadMs();
@@ -224,6 +234,7 @@ std::string jsonOf(const BudgetBenchResult& b, const BudgetBenchConfig& config) 
                          {"setting", l.setting},
                          {"samples", l.samples},
                          {"organ_ms", l.organMs},
+                         {"organ_expected_rel_rms", l.organExpectedRelRms},
                          {"pass_ms", l.passMs}});
     runs.push_back({{"budget_ms", c.budgetMs},
                     {"plan_changes", c.planChanges},

@@ -56,7 +56,10 @@ struct LearnedOptionCost {
   std::string method, setting;
   int samples = 0;              ///< steady samples learned for the option itself
   std::vector<double> organMs;  ///< ms, per organ (placements' order) at its last footprint
-  double passMs = 0.0;          ///< ms, its method's passes of no object, once a frame
+  /// per organ: the error the controller expects of the option there (its table error moved along
+  /// the organ's view angle and footprint, without the confidence charge)
+  std::vector<double> organExpectedRelRms;
+  double passMs = 0.0;  ///< ms, its method's passes of no object, once a frame
 };
 
 /// One run: a budget with the controller, or a fixed setting.
