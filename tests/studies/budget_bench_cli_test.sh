@@ -58,6 +58,18 @@ for run, r in zip(bench["controller"], results):
     # The plan is made for the budget less the tail's share, never for more than the budget.
     assert 0 < run["planned_for_ms"] <= r["budget_ms"] + 1e-9, (run, r)
     assert run["predicted_ms"] > 0, run
+    # What the controller believed: every option's cost and expected error on each organ, and
+    # for the option it chose, the expected error its choice reports (its cost is learned once
+    # more from the frame after the choice: not compared).
+    assert run["learned_overhead_ms"] >= 0, run
+    learned = {l["method"] + " " + l["setting"]: l for l in run["learned_costs"]}
+    assert len(learned) == len(run["learned_costs"]) > 0, run["learned_costs"]
+    for l in run["learned_costs"]:
+        assert len(l["organ_ms"]) == len(l["organ_expected_rel_rms"]) == 5, l
+        assert all(m >= 0 for m in l["organ_ms"]) and l["pass_ms"] >= 0 and l["samples"] >= 0, l
+    for i, ch in enumerate(run["choices"]):
+        l = learned[ch["method"] + " " + ch["setting"]]
+        assert math.isclose(l["organ_expected_rel_rms"][i], ch["expected_rel_rms"], rel_tol=1e-9), (l, ch)
 for f in bench["fixed"]:
     assert f["first_frame_ms"] > 0, f
 # The best fixed setting that fits has its p95 within the budget itself; the one reported beside

@@ -34,6 +34,9 @@ inline constexpr std::string_view kFarFrame = "far";
 /// No view angle known (QualityTable::viewAngleDeg).
 inline constexpr double kNoAngle = std::numeric_limits<double>::quiet_NaN();
 
+/// No pixel count known (QualityTable::framePx, farFramePx).
+inline constexpr double kNoPixels = std::numeric_limits<double>::quiet_NaN();
+
 /// The setting name of the fallback: lit with a wrap term (Unreal Substrate's Wrap tier).
 inline constexpr std::string_view kWrapSetting = "wrap";
 
@@ -84,9 +87,10 @@ struct QualityTable {
                                                    kNoAngle, kNoAngle, kNoAngle};
   /// px, per ViewClass: the organ pixels of its atlas frame (truth.frames[].organ_pixels); nan
   /// where unknown. With farFramePx, the footprint axis of the controller's error.
-  std::array<double, kViewClassCount> framePx{kNoAngle, kNoAngle, kNoAngle, kNoAngle, kNoAngle, kNoAngle};
+  std::array<double, kViewClassCount> framePx{kNoPixels, kNoPixels, kNoPixels,
+                                              kNoPixels, kNoPixels, kNoPixels};
   /// px, the far frame's organ pixels (QualityOption::farRelRms); nan where the atlas lacks it.
-  double farFramePx = std::numeric_limits<double>::quiet_NaN();
+  double farFramePx = kNoPixels;
   /// The cost classes' keys (costClassKey), indexed by QualityOption::costClass.
   std::vector<std::string> costClasses;
   /// The option named (method, setting), or -1.
