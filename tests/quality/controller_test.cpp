@@ -289,6 +289,27 @@ TEST(QualityController, AnOptionOfferedAnewIsWeighedAtOnce) {
   EXPECT_EQ(c.plansChanged(), changes);
 }
 
+// Budgets from none fitting to the edge of the cheapest plan, costs with 4 % noise (and swinging
+// 5 % frame to frame): once settled, the plan holds. Two rules keep it so. A plan over the
+// budget within the tolerance is not searched before the hold (searching it every
+// overRecheckFrames, tried, made 14 changes in 300 frames at 8 ms: it fits and does not by the
+// noise). A drop where nothing fits must save more than the headroom (costs that close are one
+// cost).
+TEST(QualityController, AtTheEdgeOfTheBudgetThePlanDoesNotChurnOnTheCostsNoise) {
+  ControllerSettings s;
+  s.holdFrames = 10;
+  const auto objs = objects();
+  for (double budget : {2.5, 3.0, 4.0, 6.0, 7.0, 8.0, 9.0})
+    for (double odd : {1.0, 1.05}) {
+      QualityController c(table(), s);
+      std::mt19937 rng(8);
+      runFrames(c, objs, budget, 40, rng, odd);  // settle
+      const int settled = c.plansChanged();
+      runFrames(c, objs, budget, 300, rng, odd);
+      EXPECT_LE(c.plansChanged() - settled, 1) << budget << " ms, swing " << odd;
+    }
+}
+
 TEST(QualityController, HysteresisHoldsThePlanUnderNoisyCosts) {
   ControllerSettings s;
   s.holdFrames = 10;
@@ -385,6 +406,56 @@ TEST(QualityController, SwitchSpikesAreLearnedApartAndTheSwitchWaitsUntilItFits)
   EXPECT_LE(over, 3) << "frames over the budget: one per option first switched to";
 }
 
+// A stall outside the objects' passes (the host's own work, the OS: 4 frames of 10 ms overhead,
+// not 2) drops the held plan, for its learned overhead puts it over the budget. The overhead is
+// learned every frame and decays; after the drop the plan is searched every overRecheckFrames,
+// and the plan made for the steady costs returns about 20 frames on. With the full hold it waits
+// 30: the test can fail.
+TEST(QualityController, APlanDroppedForAStallIsWeighedAgainSoon) {
+  QualityTable t;
+  t.options = {option("lit", "default", 0.50, 0.1, 1e-4), option("ray-march", "50", 0.12, 1.0, 8e-3)};
+  t.frameOverheadMs = 2.0;
+  std::vector<ObjectView> objs(1);
+  objs[0].footprintPx = 1000.0;  // ray march 9 ms, lit 0.2 ms; frames 11 and 2.2 ms
+  const double budget = 12.5;
+  const int stall = 4, frames = 40;
+  auto run = [&](int recheck) {
+    ControllerSettings s;
+    s.holdFrames = 30;
+    s.overRecheckFrames = recheck;
+    s.unmeasuredCostFactor = 1.0;  // the priors trusted: the stall is the test
+    QualityController c(t, s);
+    std::mt19937 rng(9);
+    std::normal_distribution<double> noise(1.0, 0.02);
+    const auto measured = [&](int, const ObjectChoice&, double ms) { return ms * noise(rng); };
+    simulate(
+        c, objs, budget, 60, [&](int) { return t.frameOverheadMs * noise(rng); }, measured);
+    std::vector<std::string> method;  // per frame from the stall's first
+    simulate(
+        c, objs, budget, frames,
+        [&](int f) {
+          method.push_back(c.plan().option[0] == 1 ? "ray-march" : "lit");
+          return f < stall ? 10.0 : t.frameOverheadMs * noise(rng);
+        },
+        measured);
+    return method;
+  };
+  const auto soon = run(10), full = run(30);
+  ASSERT_EQ(soon.front(), "ray-march");  // settled on the ray march
+  // Dropped during the stall, in both (the same frames up to the first recheck).
+  const auto drop = std::find(soon.begin(), soon.end(), "lit") - soon.begin();
+  ASSERT_LE(drop, stall);
+  ASSERT_EQ(std::vector(full.begin(), full.begin() + drop + 10),
+            std::vector(soon.begin(), soon.begin() + drop + 10));
+  // Back by the second recheck (the first finds the overhead not yet decayed); with the full hold
+  // still on lit a hold later.
+  const auto back = std::find(soon.begin() + drop, soon.end(), "ray-march") - soon.begin();
+  EXPECT_LE(back, drop + 2 * 10 + 1);
+  EXPECT_EQ(soon.back(), "ray-march");
+  EXPECT_EQ(full[std::size_t(drop + 29)], "lit");
+  EXPECT_EQ(full.back(), "ray-march");
+}
+
 // Frames whose every cost (objects and overhead) is the table's times one factor per frame,
 // normal about 1 with relative spread `spread` (a shared machine's speed).
 std::vector<double> runSharedNoise(QualityController& c, const std::vector<ObjectView>& objs, double budget,
@@ -403,6 +474,35 @@ std::vector<double> runSharedNoise(QualityController& c, const std::vector<Objec
 double p95(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v[std::size_t(std::ceil(0.95 * double(v.size()))) - 1];
+}
+
+// One stall (a 3x frame) is not the spread of the frames: clipped at spreadClipSigmas it moves
+// the learned spread by a third, where unclipped it made 2 % about 30 % (the test can fail).
+// Frames that keep coming far out (every other one 1.3x) still grow it to theirs.
+TEST(QualityController, OneStallDoesNotInflateTheSpread) {
+  auto spreadAfter = [&](double clipSigmas, int stallFrames, double every = 0) {
+    ControllerSettings s;
+    s.spreadClipSigmas = clipSigmas;
+    QualityController c(table(), s);
+    std::mt19937 rng(4);
+    std::normal_distribution<double> noise(1.0, 0.02);
+    const auto objs = objects();
+    simulate(
+        c, objs, 14.0, 60, [&](int) { return c.table().frameOverheadMs; },
+        [&](int, const ObjectChoice&, double ms) { return ms * noise(rng); });
+    const double before = c.frameSpread();
+    // every > 0: every other frame that much slower, else all `stallFrames` 3x
+    const auto k = [&](int f) { return every > 0 ? (f % 2 ? every : 1.0) : 3.0; };
+    simulate(
+        c, objs, 14.0, stallFrames, [&](int f) { return k(f) * c.table().frameOverheadMs; },
+        [&](int f, const ObjectChoice&, double ms) { return k(f) * ms; });
+    return std::pair{before, c.frameSpread()};
+  };
+  const auto [before, clipped] = spreadAfter(3.0, 1);
+  EXPECT_LT(before, 0.04);
+  EXPECT_LT(clipped, 1.4 * before);
+  EXPECT_GT(spreadAfter(0.0, 1).second, 0.25);
+  EXPECT_GT(spreadAfter(3.0, 30, 1.3).second, 0.1);
 }
 
 TEST(QualityController, PlansForTheTailSoThe95thPercentileFitsTheBudget) {

@@ -53,7 +53,14 @@ for run, r in zip(bench["controller"], results):
     assert len(ms) == bench["timed_frames"] and all(m > 0 for m in ms), run
     assert ms[math.ceil(0.5 * len(ms)) - 1] == r["frame_ms_median"], (ms, r)
     assert all(0 <= f < len(ms) for f in run["plan_change_frames"]), run
-    assert len(run["plan_change_frames"]) <= run["plan_changes"], run
+    assert all(0 <= f < bench["warmup_frames"] for f in run["warmup_plan_change_frames"]), run
+    assert len(run["plan_change_frames"]) + len(run["warmup_plan_change_frames"]) <= run["plan_changes"], run
+    # Per timed frame, the plan's prediction and the budget it was made for (the last frame's
+    # are the run's).
+    pred, planned = run["frame_predicted_ms"], run["frame_planned_for_ms"]
+    assert len(pred) == len(planned) == len(ms) and all(p > 0 for p in pred), run
+    assert all(0 < p <= r["budget_ms"] + 1e-9 for p in planned), run
+    assert math.isclose(pred[-1], run["predicted_ms"], rel_tol=1e-9), run
     assert run["switches_deferred"] >= 0, run
     # The plan is made for the budget less the tail's share, never for more than the budget.
     assert 0 < run["planned_for_ms"] <= r["budget_ms"] + 1e-9, (run, r)

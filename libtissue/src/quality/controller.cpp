@@ -455,10 +455,17 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
     bool offerChanged = m_lastObjects.size() != objects.size();
     for (std::size_t i = 0; i < objects.size() && !offerChanged; ++i)
       offerChanged = objects[i].allowed != m_lastObjects[i].allowed;
-    const bool due = m_age >= s.holdFrames || newBudget || offerChanged;
+    // Dropped for being over not long ago: searched every overRecheckFrames, not holdFrames.
+    const bool recheck = m_sinceOverDrop >= 0 && m_sinceOverDrop < s.holdFrames;
+    const int hold = recheck ? std::min(s.holdFrames, std::max(1, s.overRecheckFrames)) : s.holdFrames;
+    const bool due = m_age >= hold || newBudget || offerChanged;
     if (due || overHeld) {
       best = choosePlan(m_table, costs, m_overheadMs, objects, screenPx, budgetMs / tail, s, passMs);
-      const bool over = overHeld && best.predictedMs < held.predictedMs;
+      // Left for being over: for a plan that fits, or, where none does, for one cheaper by more
+      // than the headroom (costs that close are one cost; a drop within their noise churned
+      // among options of about one cost, the budget bench's run 82: 16 changes in 60 frames).
+      const bool over =
+          overHeld && best.predictedMs < held.predictedMs * (best.fits ? 1.0 : 1.0 - s.headroom);
       bool gains = newBudget ? best.expectedError < held.expectedError - 1e-12
                              : due && best.expectedError < held.expectedError * (1.0 - s.gainMargin);
       if (gains) {
@@ -474,13 +481,20 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
       }
       replace = over || gains;
       // Asked and kept: the next question in holdFrames (a search per frame would cost a
-      // knapsack per set of methods every frame: tissue_quality_bench).
+      // knapsack per set of methods every frame: tissue_quality_bench); after a drop for being
+      // over, every overRecheckFrames for a hold's length.
       if (!replace) m_age = 0;
+      if (over && !gains)
+        m_sinceOverDrop = 0;
+      else if (gains)
+        m_sinceOverDrop = -1;
     }
   } else {
     best = choosePlan(m_table, costs, m_overheadMs, objects, screenPx, budgetMs / tail, s, passMs);
+    m_sinceOverDrop = -1;
   }
   ++m_age;
+  if (m_sinceOverDrop >= 0) ++m_sinceOverDrop;
   ++m_updates;
   const std::vector<int> before = m_plan.option;
   if (replace) {
@@ -579,12 +593,18 @@ void QualityController::observe(std::span<const CostSample> samples, std::span<c
     return;
   }
   if (std::isfinite(frameMs) && frameMs > 0.0) {
-    // The frames' spread about their running mean under this plan (frameSpread).
+    // The frames' spread about their running mean under this plan (frameSpread). A frame beyond
+    // spreadClipSigmas counts as one at that bound, in the mean too (a stall left in the mean
+    // would put the next frames' deviations in the spread).
+    double sample = frameMs;
     if (m_meanSamples > 0) {
-      const double r = (frameMs - m_frameMean) / m_frameMean;
-      runningEma(m_frameVar, m_frameSamples, std::min(r * r, 1.0), m_settings.learningRate);
+      const double k = m_settings.spreadClipSigmas;
+      const double bound = k > 0.0 && m_frameSamples >= 5 ? std::min(1.0, k * std::sqrt(m_frameVar)) : 1.0;
+      const double r = std::clamp((frameMs - m_frameMean) / m_frameMean, -bound, bound);
+      sample = m_frameMean * (1.0 + r);
+      runningEma(m_frameVar, m_frameSamples, r * r, m_settings.learningRate);
     }
-    runningEma(m_frameMean, m_meanSamples, frameMs, m_settings.learningRate);
+    runningEma(m_frameMean, m_meanSamples, sample, m_settings.learningRate);
   }
   learnOverhead(frameMs - objectsMs - passesMs);
 }

@@ -138,10 +138,17 @@ struct Bench {
       if (!image) return image.error();
       const double frameMs = watch.elapsedMs();
       if (f == 0) r.firstFrameMs = frameMs;
+      const quality::QualityController* q = scene.qualityController();
+      const bool changed = q && q->plansChanged() != plansBefore;
       if (f >= config.warmupFrames) {
-        if (scene.qualityController() && scene.qualityController()->plansChanged() != plansBefore)
-          r.planChangeFrames.push_back(int(ms.size()));
+        if (changed) r.planChangeFrames.push_back(int(ms.size()));
+        if (q) {
+          r.framePredictedMs.push_back(q->plan().predictedMs);
+          r.framePlannedForMs.push_back(q->planningBudgetMs(scene.budgetMs()));
+        }
         ms.push_back(frameMs);
+      } else if (changed) {
+        r.warmupPlanChangeFrames.push_back(f);
       }
       // Five frames in a row over the cap (a shared machine's stalls come one at a time); the
       // first frame warms up (shaders, maps).
@@ -243,6 +250,9 @@ std::string jsonOf(const BudgetBenchResult& b, const BudgetBenchConfig& config) 
                     {"predicted_ms", c.predictedMs},
                     {"frame_ms", c.frameMs},
                     {"plan_change_frames", c.planChangeFrames},
+                    {"warmup_plan_change_frames", c.warmupPlanChangeFrames},
+                    {"frame_predicted_ms", c.framePredictedMs},
+                    {"frame_planned_for_ms", c.framePlannedForMs},
                     {"rel_rms_off_silhouettes", c.interiorRelRms},
                     {"organ_rel_rms", c.organRelRms},
                     {"organ_gain", c.organGain},

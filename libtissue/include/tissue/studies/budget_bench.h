@@ -75,8 +75,11 @@ struct BudgetRun {
   double predictedMs = 0.0;     ///< ms, the last plan's predicted frame
   std::vector<double> frameMs;  ///< each timed frame, ms
   double firstFrameMs = 0.0;  ///< the run's first frame, ms: the setting's first use (set-up, shader builds)
-  std::vector<int> planChangeFrames;  ///< timed frames (index into frameMs) the plan changed in
-  std::vector<double> organRelRms;    ///< per organ (placements' order): rel RMS over its pixels
+  std::vector<int> planChangeFrames;        ///< timed frames (index into frameMs) the plan changed in
+  std::vector<int> warmupPlanChangeFrames;  ///< warm-up frames (0: the run's first) the plan changed in
+  /// per timed frame (budget runs): the plan's predicted frame and the budget it was made for, ms
+  std::vector<double> framePredictedMs, framePlannedForMs;
+  std::vector<double> organRelRms;  ///< per organ (placements' order): rel RMS over its pixels
   /// per organ: AtlasScore's gain and shape rel RMS over its pixels (its level against the truth's,
   /// and its error once the level is matched)
   std::vector<double> organGain, organShapeRelRms;
