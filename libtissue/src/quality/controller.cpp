@@ -484,10 +484,7 @@ const std::vector<ObjectChoice>& QualityController::update(std::span<const Objec
       // knapsack per set of methods every frame: tissue_quality_bench); after a drop for being
       // over, every overRecheckFrames for a hold's length.
       if (!replace) m_age = 0;
-      if (over && !gains)
-        m_sinceOverDrop = 0;
-      else if (gains)
-        m_sinceOverDrop = -1;
+      if (replace) m_sinceOverDrop = gains ? -1 : 0;
     }
   } else {
     best = choosePlan(m_table, costs, m_overheadMs, objects, screenPx, budgetMs / tail, s, passMs);
@@ -598,11 +595,13 @@ void QualityController::observe(std::span<const CostSample> samples, std::span<c
     // would put the next frames' deviations in the spread).
     double sample = frameMs;
     if (m_meanSamples > 0) {
-      const double k = m_settings.spreadClipSigmas;
-      const double bound = k > 0.0 && m_frameSamples >= 5 ? std::min(1.0, k * std::sqrt(m_frameVar)) : 1.0;
-      const double r = std::clamp((frameMs - m_frameMean) / m_frameMean, -bound, bound);
-      sample = m_frameMean * (1.0 + r);
-      runningEma(m_frameVar, m_frameSamples, r * r, m_settings.learningRate);
+      double r = (frameMs - m_frameMean) / m_frameMean;
+      if (const double k = m_settings.spreadClipSigmas; k > 0.0 && m_frameSamples >= 5) {
+        const double bound = k * std::sqrt(m_frameVar);
+        r = std::clamp(r, -bound, bound);
+        sample = m_frameMean * (1.0 + r);
+      }
+      runningEma(m_frameVar, m_frameSamples, std::min(r * r, 1.0), m_settings.learningRate);
     }
     runningEma(m_frameMean, m_meanSamples, sample, m_settings.learningRate);
   }
